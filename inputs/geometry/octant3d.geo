@@ -1,0 +1,10 @@
+// Octant [0, L]^3 (3D Sedov). The mesh size comes from the scene (mesh.size).
+SetFactory("OpenCASCADE");
+L = 1.2;
+Box(1) = {0, 0, 0, L, L, L};
+// OpenCASCADE numbers the box faces x = 0, x = L, y = 0, y = L, z = 0, z = L.
+Physical Surface("symmetry_x") = {1};
+Physical Surface("symmetry_y") = {3};
+Physical Surface("symmetry_z") = {5};
+Physical Surface("outer") = {2, 4, 6};
+Physical Volume("gas") = {1};

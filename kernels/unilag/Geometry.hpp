@@ -1,0 +1,143 @@
+/*! \file Geometry.hpp
+ *  \brief Simplex geometry: volumes, corner vectors c_ri = d|T_i|/dx_r, characteristic lengths.
+ *
+ *  Conventions (gpr.md 2.1): a cell is a simplex with NV = D+1 nodes, positively oriented. The corner vector
+ *  of local node k is c_k = d|T|/dx_k = -(1/D) s_k n_k, where s_k n_k is the outward area vector of the face
+ *  opposite node k. Hence sum_k c_k = 0, (1/D) sum_k c_k . x_k = |T|, and the face opposite k has outward
+ *  area vector -D c_k. Face k of a cell always means "the face opposite local node k".
+ */
+#pragma once
+
+#include "unilag/Types.hpp"
+
+namespace unilag
+{
+
+//! Connectivity and coordinates a kernel needs, as Views (copied by value into lambdas).
+template <int D>
+struct MeshView
+{
+    static constexpr int NV = D + 1;
+    Kokkos::View<const LO**, Kokkos::LayoutLeft, MemSpace> cellNodes;  //!< map: cell -> NV nodes
+    View<const LO*> nodeCornerOffsets;                                 //!< map: node -> corners (CSR offsets)
+    View<const LO*> nodeCorners;                                       //!< corner id = cell * NV + k, sorted by global cell id
+    View<const int**> cellFaceGroup; //!< boundary group of face k of a cell, -1 if interior (LayoutRight default)
+    LO nOwnedCells = 0, nCells = 0;  //!< owned cells first, then ghosts
+    LO nOwnedNodes = 0, nNodes = 0;  //!< owned nodes first, then the other nodes of local cells
+};
+
+//! Corner geometry of one simplex from its node positions.
+template <int D>
+struct Simplex
+{
+    static constexpr int NV = D + 1;
+    Vec<D> c[NV];  //!< corner vectors
+    double volume; //!< signed measure |T|
+
+    KOKKOS_INLINE_FUNCTION explicit Simplex(const Vec<D> (&x)[NV])
+    {
+        if constexpr (D == 2)
+        {
+            // c_k = 1/2 perp(x_{k+1} - x_{k-1}), perp(a) = (a_y, -a_x)
+            for (int k = 0; k < 3; ++k)
+            {
+                const Vec<2>& a = x[(k + 2) % 3];
+                const Vec<2>& b = x[(k + 1) % 3];
+                c[k][0] = 0.5 * (b[1] - a[1]);
+                c[k][1] = -0.5 * (b[0] - a[0]);
+            }
+            volume = 0.5 * ((x[1][0] - x[0][0]) * (x[2][1] - x[0][1]) - (x[1][1] - x[0][1]) * (x[2][0] - x[0][0]));
+        }
+        else
+        {
+            // c_k = -(1/6) (x_b - x_a) x (x_c - x_a) with (k, a, b, c) an even permutation of (0, 1, 2, 3)
+            constexpr int face[4][3] = {{1, 2, 3}, {0, 3, 2}, {0, 1, 3}, {0, 2, 1}};
+            for (int k = 0; k < 4; ++k)
+            {
+                const Vec<3> u = x[face[k][1]] - x[face[k][0]];
+                const Vec<3> w = x[face[k][2]] - x[face[k][0]];
+                c[k][0] = -(u[1] * w[2] - u[2] * w[1]) / 6.0;
+                c[k][1] = -(u[2] * w[0] - u[0] * w[2]) / 6.0;
+                c[k][2] = -(u[0] * w[1] - u[1] * w[0]) / 6.0;
+            }
+            const Vec<3> e1 = x[1] - x[0], e2 = x[2] - x[0], e3 = x[3] - x[0];
+            volume = (e1[0] * (e2[1] * e3[2] - e2[2] * e3[1]) - e1[1] * (e2[0] * e3[2] - e2[2] * e3[0]) +
+                      e1[2] * (e2[0] * e3[1] - e2[1] * e3[0])) /
+                     6.0;
+        }
+    }
+
+    //! Incircle (2D) / insphere (3D) diameter: 2|T| / sum_k |c_k| in both dimensions.
+    KOKKOS_INLINE_FUNCTION double charLength() const
+    {
+        double s = 0.0;
+        for (int k = 0; k < NV; ++k)
+            s += norm(c[k]);
+        return 2.0 * volume / s;
+    }
+};
+
+//! Load the node positions of cell i.
+template <int D>
+KOKKOS_INLINE_FUNCTION void gatherNodes(const MeshView<D>& m, const ConstField& x, LO i, Vec<D> (&xi)[D + 1])
+{
+    for (int k = 0; k < D + 1; ++k)
+    {
+        const LO r = m.cellNodes(i, k);
+        for (int d = 0; d < D; ++d)
+            xi[k][d] = x(r, d);
+    }
+}
+
+//! Per-cell geometry of the current configuration.
+struct CellGeometry
+{
+    View<double*> volume;  //!< |T_i|
+    View<double*> length;  //!< characteristic length h_i
+    Field corner;          //!< cell x (NV*D): component d of c_k in column k*D + d
+
+    CellGeometry() = default;
+    CellGeometry(LO nCells, int dim)
+        : volume("unilag::volume", nCells), length("unilag::length", nCells),
+          corner("unilag::corner", nCells, (dim + 1) * dim)
+    {
+    }
+};
+
+template <int D>
+KOKKOS_INLINE_FUNCTION Vec<D> cornerVec(const Field& corner, LO i, int k)
+{
+    Vec<D> c;
+    for (int d = 0; d < D; ++d)
+        c[d] = corner(i, k * D + d);
+    return c;
+}
+
+/*! \brief Volumes, corner vectors and lengths of cells [0, nCells) for positions x.
+ *  Returns the smallest volume found (<= 0 flags an inverted or degenerate cell). */
+template <int D>
+double computeGeometry(const MeshView<D>& mesh, const ConstField& x, const CellGeometry& g, LO nCells)
+{
+    constexpr int NV = D + 1;
+    auto volume = g.volume;
+    auto length = g.length;
+    auto corner = g.corner;
+    double minVolume = 0.0;
+    auto geometry = KOKKOS_LAMBDA(const LO i, double& vmin)
+    {
+        Vec<D> xi[NV];
+        gatherNodes<D>(mesh, x, i, xi);
+        const Simplex<D> s(xi);
+        volume(i) = s.volume;
+        length(i) = s.charLength();
+        for (int k = 0; k < NV; ++k)
+            for (int d = 0; d < D; ++d)
+                corner(i, k * D + d) = s.c[k][d];
+        if (s.volume < vmin)
+            vmin = s.volume;
+    };
+    Kokkos::parallel_reduce("unilag::geometry::cells", range(nCells), geometry, Kokkos::Min<double>(minVolume));
+    return minVolume;
+}
+
+} // namespace unilag

@@ -1,0 +1,153 @@
+/*! \file Types.hpp
+ *  \brief Execution/memory spaces, View aliases and small fixed-size vector algebra for the kernels.
+ *
+ *  Everything in kernels/ includes Kokkos core only (never Tpetra), so the same headers build for a GPU
+ *  backend. Fields are LayoutLeft 2-D Views (entity x component): that is the layout of a Tpetra
+ *  MultiVector's device view, so the src/ layer hands MultiVector storage to the kernels without copies,
+ *  and it is structure-of-arrays, which vectorises on CPUs and coalesces on GPUs.
+ */
+#pragma once
+
+#include <Kokkos_Core.hpp>
+
+namespace unilag
+{
+
+using ExecSpace = Kokkos::DefaultExecutionSpace;
+using MemSpace = ExecSpace::memory_space;
+using LO = int;  //!< local ordinal (cells, nodes, corners on one rank)
+
+template <class T>
+using View = Kokkos::View<T, MemSpace>;
+//! entity x component field, the storage of a Tpetra::MultiVector
+using Field = Kokkos::View<double**, Kokkos::LayoutLeft, MemSpace>;
+using ConstField = Kokkos::View<const double**, Kokkos::LayoutLeft, MemSpace>;
+
+template <class Policy = ExecSpace>
+inline Kokkos::RangePolicy<Policy> range(std::size_t n)
+{
+    return Kokkos::RangePolicy<Policy>(0, n);
+}
+
+//! Small vector in D dimensions (D = 2 or 3), usable inside kernels.
+template <int D>
+struct Vec
+{
+    double v[D];
+    KOKKOS_INLINE_FUNCTION double& operator[](int i) { return v[i]; }
+    KOKKOS_INLINE_FUNCTION double operator[](int i) const { return v[i]; }
+    KOKKOS_INLINE_FUNCTION static Vec zero()
+    {
+        Vec r;
+        for (int i = 0; i < D; ++i)
+            r.v[i] = 0.0;
+        return r;
+    }
+};
+
+template <int D>
+KOKKOS_INLINE_FUNCTION Vec<D> operator+(const Vec<D>& a, const Vec<D>& b)
+{
+    Vec<D> r;
+    for (int i = 0; i < D; ++i)
+        r[i] = a[i] + b[i];
+    return r;
+}
+template <int D>
+KOKKOS_INLINE_FUNCTION Vec<D> operator-(const Vec<D>& a, const Vec<D>& b)
+{
+    Vec<D> r;
+    for (int i = 0; i < D; ++i)
+        r[i] = a[i] - b[i];
+    return r;
+}
+template <int D>
+KOKKOS_INLINE_FUNCTION Vec<D> operator*(double s, const Vec<D>& a)
+{
+    Vec<D> r;
+    for (int i = 0; i < D; ++i)
+        r[i] = s * a[i];
+    return r;
+}
+template <int D>
+KOKKOS_INLINE_FUNCTION double dot(const Vec<D>& a, const Vec<D>& b)
+{
+    double s = 0.0;
+    for (int i = 0; i < D; ++i)
+        s += a[i] * b[i];
+    return s;
+}
+template <int D>
+KOKKOS_INLINE_FUNCTION double norm(const Vec<D>& a)
+{
+    return Kokkos::Experimental::sqrt(dot(a, a));
+}
+
+//! Symmetric D x D matrix stored full (D <= 3 keeps this in registers).
+template <int D>
+struct Mat
+{
+    double a[D][D];
+    KOKKOS_INLINE_FUNCTION static Mat zero()
+    {
+        Mat m;
+        for (int i = 0; i < D; ++i)
+            for (int j = 0; j < D; ++j)
+                m.a[i][j] = 0.0;
+        return m;
+    }
+    KOKKOS_INLINE_FUNCTION Vec<D> operator*(const Vec<D>& x) const
+    {
+        Vec<D> r;
+        for (int i = 0; i < D; ++i)
+        {
+            double s = 0.0;
+            for (int j = 0; j < D; ++j)
+                s += a[i][j] * x[j];
+            r[i] = s;
+        }
+        return r;
+    }
+    //! this += s * (u outer u)
+    KOKKOS_INLINE_FUNCTION void addOuter(double s, const Vec<D>& u)
+    {
+        for (int i = 0; i < D; ++i)
+            for (int j = 0; j < D; ++j)
+                a[i][j] += s * u[i] * u[j];
+    }
+};
+
+//! Solve M x = b for small SPD M by Cramer's rule (D = 1, 2, 3).
+template <int D>
+KOKKOS_INLINE_FUNCTION Vec<D> solve(const Mat<D>& M, const Vec<D>& b)
+{
+    Vec<D> x;
+    if constexpr (D == 1)
+    {
+        x[0] = b[0] / M.a[0][0];
+    }
+    else if constexpr (D == 2)
+    {
+        const double det = M.a[0][0] * M.a[1][1] - M.a[0][1] * M.a[1][0];
+        x[0] = (M.a[1][1] * b[0] - M.a[0][1] * b[1]) / det;
+        x[1] = (M.a[0][0] * b[1] - M.a[1][0] * b[0]) / det;
+    }
+    else
+    {
+        const auto& a = M.a;
+        const double c00 = a[1][1] * a[2][2] - a[1][2] * a[2][1];
+        const double c01 = a[1][2] * a[2][0] - a[1][0] * a[2][2];
+        const double c02 = a[1][0] * a[2][1] - a[1][1] * a[2][0];
+        const double det = a[0][0] * c00 + a[0][1] * c01 + a[0][2] * c02;
+        const double inv = 1.0 / det;
+        x[0] = inv * (c00 * b[0] + (a[0][2] * a[2][1] - a[0][1] * a[2][2]) * b[1] +
+                      (a[0][1] * a[1][2] - a[0][2] * a[1][1]) * b[2]);
+        x[1] = inv * (c01 * b[0] + (a[0][0] * a[2][2] - a[0][2] * a[2][0]) * b[1] +
+                      (a[0][2] * a[1][0] - a[0][0] * a[1][2]) * b[2]);
+        x[2] = inv * (c02 * b[0] + (a[0][1] * a[2][0] - a[0][0] * a[2][1]) * b[1] +
+                      (a[0][0] * a[1][1] - a[0][1] * a[1][0]) * b[2]);
+    }
+    return x;
+}
+
+} // namespace unilag

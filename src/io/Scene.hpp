@@ -1,0 +1,106 @@
+/*! \file Scene.hpp
+ *  \brief A scene (one YAML input file): reading with Teuchos' YAML parser, `--set` overrides, validation.
+ *
+ *  Every key is checked against the schema in Scene.cpp: an unknown or misspelt key, a wrong type or an
+ *  out-of-range value raises InputError naming the file and the key path, before anything is written.
+ */
+#pragma once
+
+#include <array>
+#include <map>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+#include <Teuchos_ParameterList.hpp>
+
+namespace unilag
+{
+
+//! Bad input: the message names the file and the key (or element); the CLI prints it and exits with 2.
+class InputError : public std::runtime_error
+{
+  public:
+    using std::runtime_error::runtime_error;
+};
+
+//! A scalar initial value: a constant or a muparser expression of x, y, z, r.
+struct Expr
+{
+    std::string text; //!< expression text ("" if constant)
+    double value = 0.0;
+    bool isConstant() const { return text.empty(); }
+};
+
+struct MaterialSpec
+{
+    std::string eos = "ideal_gas";
+    double gamma = 1.4;
+    double cv = 1.0;
+};
+
+struct RegionSpec
+{
+    std::string material;
+    Expr density;
+    Expr pressure;       //!< either pressure ...
+    Expr internalEnergy; //!< ... or specific internal energy
+    bool hasPressure = true;
+    std::array<Expr, 3> velocity;
+    int velocityComponents = 0;
+};
+
+struct BoundarySpec
+{
+    std::string type; //!< free, slip_wall, symmetry, velocity
+    std::array<double, 3> velocity{0.0, 0.0, 0.0};
+};
+
+struct Scene
+{
+    std::string file;      //!< path of the scene file
+    std::string directory; //!< folder of the scene file (relative paths resolve against it)
+    std::string name;
+
+    // mesh
+    std::string geometry; //!< .geo to mesh at start-up (resolved path), or
+    std::string meshFile; //!< .msh to read (resolved path)
+    double meshSize = 0.0;
+
+    std::map<std::string, MaterialSpec> materials;
+    std::map<std::string, RegionSpec> regions;       //!< by gmsh physical group name (cells)
+    std::map<std::string, BoundarySpec> boundaries;  //!< by gmsh physical group name (faces)
+
+    bool hasDeposit = false;
+    std::array<double, 3> depositPosition{0.0, 0.0, 0.0};
+    double depositEnergy = 0.0;
+
+    double endTime = 1.0;
+    double cfl = 0.5;
+    double maxVolumeChange = 0.1;
+    double initialTimeStep = 0.0; //!< 0: from the CFL condition, scaled by 0.1
+    double maxGrowth = 1.1;
+    long maxSteps = 10000000;
+    int maxRetries = 8;
+
+    std::string outputDirectory = "output";
+    double outputInterval = 0.0; //!< 0: first and last state only
+    bool writeOutput = true;
+
+    std::string exactSolution = "none"; //!< none, sedov
+    std::string exactTable;             //!< resolved path of a radial profile (csv)
+    double exactShockRadius = 0.0;
+    double maxL1Density = 0.0;          //!< --check bound, 0 = none
+    double shockRadiusTolerance = 0.0;  //!< --check bound (relative), 0 = none
+
+    Teuchos::ParameterList resolved; //!< the scene with defaults filled in, written beside the output
+};
+
+/*! \brief Read, override and validate a scene. Throws InputError.
+ *  \param overrides "key.path=value" strings from --set (dots separate nested keys). */
+Scene readScene(const std::string& file, const std::vector<std::string>& overrides);
+
+//! Write the resolved scene as YAML.
+void writeScene(const Scene& scene, const std::string& file);
+
+} // namespace unilag

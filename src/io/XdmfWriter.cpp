@@ -1,0 +1,234 @@
+#include "io/XdmfWriter.hpp"
+
+#include <hdf5.h>
+
+#include <algorithm>
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+#include <set>
+#include <sstream>
+#include <stdexcept>
+
+namespace unilag::io {
+namespace {
+
+// Owns one HDF5 id. close() is the checked path used on success; the destructor only runs
+// for ids not closed explicitly (error unwinding), where a second exception is not an option.
+class H5Handle {
+public:
+  H5Handle(hid_t id, herr_t (*closer)(hid_t), const std::string& what) : id_(id), closer_(closer) {
+    if (id_ < 0) throw std::runtime_error("XdmfWriter: " + what + " failed");
+  }
+  ~H5Handle() {
+    if (id_ >= 0 && closer_(id_) < 0) std::fprintf(stderr, "XdmfWriter: failed to release an HDF5 id\n");
+  }
+  H5Handle(const H5Handle&) = delete;
+  H5Handle& operator=(const H5Handle&) = delete;
+  operator hid_t() const { return id_; }
+  void close(const std::string& what) {
+    const hid_t id = id_;
+    id_ = -1;
+    if (closer_(id) < 0) throw std::runtime_error("XdmfWriter: closing " + what + " failed");
+  }
+
+private:
+  hid_t id_;
+  herr_t (*closer_)(hid_t);
+};
+
+void check(herr_t status, const std::string& what) {
+  if (status < 0) throw std::runtime_error("XdmfWriter: " + what + " failed");
+}
+
+// Names end up in HDF5 paths and XML text: restrict them so neither needs escaping (no ".", "..").
+bool isSafeName(const std::string& s) {
+  return !s.empty() && s[0] != '.' && std::all_of(s.begin(), s.end(), [](char c) {
+    return (c >= 'a' && c <= 'z') || (c >= 'A' && c <= 'Z') || (c >= '0' && c <= '9') || c == '_' || c == '-' || c == '.';
+  });
+}
+
+// Collectively write rows [rowOffset, rowOffset+nRows) of the dataset `name` [nGlobalRows x nCols].
+void writeRows(hid_t file, const std::string& fileName, const std::string& name, hid_t memType, hid_t fileType,
+               const void* data, hsize_t nGlobalRows, hsize_t rowOffset, hsize_t nRows, hsize_t nCols) {
+  const std::string where = fileName + ":/" + name;
+  const hsize_t gdims[2] = {nGlobalRows, nCols}, ldims[2] = {nRows, nCols}, start[2] = {rowOffset, 0};
+  H5Handle fspace(H5Screate_simple(2, gdims, nullptr), H5Sclose, "H5Screate_simple (file) for " + where);
+  H5Handle mspace(H5Screate_simple(2, ldims, nullptr), H5Sclose, "H5Screate_simple (memory) for " + where);
+  H5Handle dcpl(H5Pcreate(H5P_DATASET_CREATE), H5Pclose, "H5Pcreate(dcpl) for " + where);
+  // Every element is written below, so skip the fill pass (a full extra write in parallel).
+  check(H5Pset_fill_time(dcpl, H5D_FILL_TIME_NEVER), "H5Pset_fill_time for " + where);
+  H5Handle dset(H5Dcreate2(file, ("/" + name).c_str(), fileType, fspace, H5P_DEFAULT, dcpl, H5P_DEFAULT),
+                H5Dclose, "H5Dcreate2 for " + where);
+  if (nRows == 0) {  // ranks without rows still take part in the collective write
+    check(H5Sselect_none(fspace), "H5Sselect_none (file) for " + where);
+    check(H5Sselect_none(mspace), "H5Sselect_none (memory) for " + where);
+  } else {
+    check(H5Sselect_hyperslab(fspace, H5S_SELECT_SET, start, nullptr, ldims, nullptr), "H5Sselect_hyperslab for " + where);
+  }
+  H5Handle dxpl(H5Pcreate(H5P_DATASET_XFER), H5Pclose, "H5Pcreate(dxpl) for " + where);
+  check(H5Pset_dxpl_mpio(dxpl, H5FD_MPIO_COLLECTIVE), "H5Pset_dxpl_mpio for " + where);
+  static const double dummy = 0.0;  // H5Dwrite rejects a null buffer on some versions even if nothing is selected
+  check(H5Dwrite(dset, memType, mspace, fspace, dxpl, data ? data : &dummy), "H5Dwrite for " + where);
+  dxpl.close("dxpl of " + where);
+  dset.close(where);
+  dcpl.close("dcpl of " + where);
+  mspace.close("memory space of " + where);
+  fspace.close("file space of " + where);
+}
+
+// Write via a temporary file and rename, so readers never see a half-written XML file.
+void writeFileAtomically(const std::string& path, const std::string& text) {
+  const std::string tmp = path + ".tmp";
+  {
+    std::ofstream out(tmp, std::ios::trunc);
+    out << text;
+    out.flush();
+    if (!out) throw std::runtime_error("XdmfWriter: cannot write " + tmp);
+  }
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) throw std::runtime_error("XdmfWriter: cannot rename " + tmp + " to " + path);
+}
+
+std::string dataItem(long long rows, int cols, const char* numberType, const std::string& h5, const std::string& ds) {
+  std::ostringstream s;
+  s << "    <DataItem Dimensions=\"" << rows << ' ' << cols << "\" NumberType=\"" << numberType
+    << "\" Precision=\"8\" Format=\"HDF\">" << h5 << ":/" << ds << "</DataItem>\n";
+  return s.str();
+}
+
+}  // namespace
+
+XdmfWriter::XdmfWriter(MPI_Comm comm, std::string dir, std::string basename, int dim)
+    : dir_(std::move(dir)), base_(std::move(basename)), dim_(dim) {
+  if (dim_ != 2 && dim_ != 3) throw std::invalid_argument("XdmfWriter: dim must be 2 or 3");
+  if (!isSafeName(base_)) throw std::invalid_argument("XdmfWriter: invalid basename '" + base_ + "'");
+  if (MPI_Comm_dup(comm, &comm_) != MPI_SUCCESS) throw std::runtime_error("XdmfWriter: MPI_Comm_dup failed");
+  MPI_Comm_rank(comm_, &rank_);
+}
+
+XdmfWriter::~XdmfWriter() {
+  int finalized = 0;
+  MPI_Finalized(&finalized);
+  if (!finalized && comm_ != MPI_COMM_NULL) MPI_Comm_free(&comm_);
+}
+
+long long XdmfWriter::exclusiveOffset(MPI_Comm comm, long long nLocal) {
+  long long offset = 0;
+  MPI_Exscan(&nLocal, &offset, 1, MPI_LONG_LONG, MPI_SUM, comm);
+  int rank = 0;
+  MPI_Comm_rank(comm, &rank);
+  return rank == 0 ? 0 : offset;  // MPI leaves rank 0's result undefined
+}
+
+// Input errors must be raised on all ranks together, or the others hang in the next collective.
+void XdmfWriter::throwIfAnyRank(const std::string& localError) const {
+  int bad = localError.empty() ? 0 : 1, anyBad = 0;
+  MPI_Allreduce(&bad, &anyBad, 1, MPI_INT, MPI_LOR, comm_);
+  if (anyBad) throw std::invalid_argument(bad ? localError : "XdmfWriter: invalid input on another rank");
+}
+
+void XdmfWriter::setTopology(long long nOwnedNodes, long long nOwnedCells, const std::vector<long long>& connectivity) {
+  std::string err;
+  if (nOwnedNodes < 0 || nOwnedCells < 0) err = "XdmfWriter::setTopology: negative count";
+  else if (connectivity.size() != static_cast<size_t>(nOwnedCells) * (dim_ + 1))
+    err = "XdmfWriter::setTopology: connectivity size != nOwnedCells * (dim+1)";
+  throwIfAnyRank(err);
+  long long local[2] = {nOwnedNodes, nOwnedCells}, global[2] = {0, 0};
+  MPI_Allreduce(local, global, 2, MPI_LONG_LONG, MPI_SUM, comm_);
+  const auto badId = std::find_if(connectivity.begin(), connectivity.end(), [&](long long id) { return id < 0 || id >= global[0]; });
+  throwIfAnyRank(badId == connectivity.end() ? "" : "XdmfWriter::setTopology: node id out of range: " + std::to_string(*badId));
+  nOwnedNodes_ = nOwnedNodes;
+  nOwnedCells_ = nOwnedCells;
+  nodeOffset_ = exclusiveOffset(comm_, nOwnedNodes);
+  cellOffset_ = exclusiveOffset(comm_, nOwnedCells);
+  nNodes_ = global[0];
+  nCells_ = global[1];
+  connectivity_ = connectivity;
+  haveTopology_ = true;
+}
+
+std::string XdmfWriter::stepName(int index) const {
+  char buf[32];
+  std::snprintf(buf, sizeof buf, "_%06d", index);
+  return base_ + buf;
+}
+
+std::string XdmfWriter::collectionPath() const { return dir_ + "/" + base_ + ".xmf"; }
+
+std::string XdmfWriter::writeStep(int index, double time, const std::vector<double>& coords,
+                                  const std::vector<CellField>& fields) {
+  if (!haveTopology_) throw std::logic_error("XdmfWriter::writeStep: setTopology() was not called");
+  std::string err;
+  std::set<std::string> names = {"coordinates", "connectivity"};
+  if (index < 0) err = "XdmfWriter::writeStep: negative index";
+  else if (coords.size() != static_cast<size_t>(nOwnedNodes_) * 3) err = "XdmfWriter::writeStep: coords size != nOwnedNodes * 3";
+  for (const CellField& f : fields) {
+    if (!isSafeName(f.name) || !names.insert(f.name).second) err = "XdmfWriter::writeStep: invalid or duplicate field name '" + f.name + "'";
+    else if (f.ncomp != 1 && f.ncomp != 3) err = "XdmfWriter::writeStep: field '" + f.name + "' must have ncomp 1 or 3";
+    else if (!f.data && nOwnedCells_ > 0) err = "XdmfWriter::writeStep: field '" + f.name + "' has no data";
+  }
+  throwIfAnyRank(err);
+
+  const std::string h5Name = stepName(index) + ".h5", h5Path = dir_ + "/" + h5Name;
+  H5Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "H5Pcreate(fapl) for " + h5Path);
+  check(H5Pset_fapl_mpio(fapl, comm_, MPI_INFO_NULL), "H5Pset_fapl_mpio for " + h5Path);
+  H5Handle file(H5Fcreate(h5Path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, fapl), H5Fclose, "H5Fcreate of " + h5Path);
+  fapl.close("fapl of " + h5Path);
+  writeRows(file, h5Path, "coordinates", H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE, coords.data(), nNodes_, nodeOffset_, nOwnedNodes_, 3);
+  writeRows(file, h5Path, "connectivity", H5T_NATIVE_LLONG, H5T_STD_I64LE, connectivity_.data(), nCells_, cellOffset_,
+            nOwnedCells_, dim_ + 1);
+  for (const CellField& f : fields)
+    writeRows(file, h5Path, f.name, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE, f.data, nCells_, cellOffset_, nOwnedCells_, f.ncomp);
+  file.close(h5Path);  // collective: the .h5 is complete on disk before rank 0 references it
+
+  std::string xmlError;
+  if (rank_ == 0) {
+    try {
+      writeXmlFiles(index, time, fields);
+    } catch (const std::exception& e) {
+      xmlError = e.what();
+    }
+  }
+  // Share rank 0's outcome so every rank returns or throws alike.
+  int failed = xmlError.empty() ? 0 : 1;
+  MPI_Bcast(&failed, 1, MPI_INT, 0, comm_);
+  if (failed) throw std::runtime_error(rank_ == 0 ? xmlError : "XdmfWriter: writing XDMF files failed on rank 0");
+  return h5Path;
+}
+
+std::string XdmfWriter::gridXml(int index, double time, const std::vector<CellField>& fields) const {
+  const std::string h5 = stepName(index) + ".h5";  // relative: the .xmf files sit next to the .h5
+  std::ostringstream s;
+  s << std::setprecision(17);
+  s << "  <Grid Name=\"" << base_ << "\" GridType=\"Uniform\">\n"
+    << "   <Time Value=\"" << time << "\"/>\n"
+    << "   <Topology TopologyType=\"" << (dim_ == 2 ? "Triangle" : "Tetrahedron") << "\" NumberOfElements=\"" << nCells_ << "\">\n"
+    << dataItem(nCells_, dim_ + 1, "Int", h5, "connectivity") << "   </Topology>\n"
+    << "   <Geometry GeometryType=\"XYZ\">\n"
+    << dataItem(nNodes_, 3, "Float", h5, "coordinates") << "   </Geometry>\n";
+  for (const CellField& f : fields)
+    s << "   <Attribute Name=\"" << f.name << "\" AttributeType=\"" << (f.ncomp == 1 ? "Scalar" : "Vector")
+      << "\" Center=\"Cell\">\n"
+      << dataItem(nCells_, f.ncomp, "Float", h5, f.name) << "   </Attribute>\n";
+  s << "  </Grid>\n";
+  return s.str();
+}
+
+void XdmfWriter::writeXmlFiles(int index, double time, const std::vector<CellField>& fields) {
+  const std::string header = "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\"";
+  writeFileAtomically(dir_ + "/" + stepName(index) + ".xmf",
+                      header + ">\n <Domain>\n" + gridXml(index, time, fields) + " </Domain>\n</Xdmf>\n");
+
+  // Rewriting an index (e.g. a run rewound to a restart) drops it and every later dump, keeping time monotonic.
+  dumps_.erase(std::remove_if(dumps_.begin(), dumps_.end(), [&](const auto& d) { return d.first >= index; }), dumps_.end());
+  dumps_.emplace_back(index, time);
+  std::ostringstream s;
+  s << header << " xmlns:xi=\"http://www.w3.org/2001/XInclude\">\n <Domain>\n"
+    << "  <Grid Name=\"" << base_ << "\" GridType=\"Collection\" CollectionType=\"Temporal\">\n";
+  for (const auto& d : dumps_)
+    s << "   <xi:include href=\"" << stepName(d.first) << ".xmf\" xpointer=\"xpointer(//Xdmf/Domain/Grid)\"/>\n";
+  s << "  </Grid>\n </Domain>\n</Xdmf>\n";
+  writeFileAtomically(collectionPath(), s.str());
+}
+
+}  // namespace unilag::io

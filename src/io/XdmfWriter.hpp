@@ -1,0 +1,80 @@
+#pragma once
+/*! \file XdmfWriter.hpp
+ *  \brief Parallel HDF5 + XDMF3 output of cell-centred fields on simplex meshes (ParaView/VisIt readable).
+ */
+#ifndef OMPI_SKIP_MPICXX
+#define OMPI_SKIP_MPICXX 1  // C API only; OpenMPI's deprecated C++ bindings warn under -Wextra
+#endif
+#include <mpi.h>
+
+#include <string>
+#include <utility>
+#include <vector>
+
+namespace unilag::io {
+
+/*! \brief One cell-centred field on this rank's owned cells. */
+struct CellField {
+  std::string name;    //!< dataset/attribute name, e.g. "density" (letters, digits, '_', '-', '.')
+  int ncomp;           //!< 1 = scalar, 3 = vector (always 3 for vectors, z = 0 in 2D)
+  const double* data;  //!< row-major, nOwnedCells * ncomp
+};
+
+/*! \brief Writes one self-contained HDF5 file per dump plus XDMF3 descriptions of it.
+ *
+ *  Each dump <dir>/<basename>_NNNNNN.h5 holds /coordinates, /connectivity and one dataset per field,
+ *  written collectively with MPI-IO. Rank 0 writes <basename>_NNNNNN.xmf (one Uniform grid) and keeps
+ *  <basename>.xmf, a Temporal Collection that includes every dump written by this writer.
+ *  All member functions except collectionPath() are collective over the communicator.
+ */
+class XdmfWriter {
+public:
+  /*! \brief Create a writer. \p dir must already exist; \p comm is duplicated; \p dim is 2 (triangles) or 3 (tets). */
+  XdmfWriter(MPI_Comm comm, std::string dir, std::string basename, int dim);
+  /*! \brief Frees the duplicated communicator (if MPI is still initialised). */
+  ~XdmfWriter();
+  XdmfWriter(const XdmfWriter&) = delete;
+  XdmfWriter& operator=(const XdmfWriter&) = delete;
+
+  /*! \brief Exclusive prefix sum of \p nLocal over the ranks of \p comm (0 on rank 0). Collective.
+   *
+   *  This is the rule for global output ids: rank p owns [exclusiveOffset(comm, nOwned), + nOwned).
+   */
+  static long long exclusiveOffset(MPI_Comm comm, long long nLocal);
+
+  /*! \brief Set (or reset after repartitioning) the owned node/cell counts and the owned cells'
+   *         connectivity as 0-based global output node ids, (dim+1) per cell, row-major. Collective.
+   *  \throws std::invalid_argument on every rank if any rank passed inconsistent input.
+   */
+  void setTopology(long long nOwnedNodes, long long nOwnedCells, const std::vector<long long>& connectivity);
+
+  /*! \brief Write dump \p index at simulation \p time and update the XDMF files. Collective.
+   *  \param coords owned node coordinates, row-major nOwnedNodes * 3 (z = 0 in 2D)
+   *  \param fields cell fields; same names, order and ncomp on every rank
+   *  \return path of the written .h5 file
+   *  \throws std::invalid_argument (bad input, thrown on every rank) or std::runtime_error (HDF5/file error)
+   */
+  std::string writeStep(int index, double time, const std::vector<double>& coords,
+                        const std::vector<CellField>& fields);
+
+  /*! \brief Path of the temporal collection file "<dir>/<basename>.xmf". */
+  std::string collectionPath() const;
+
+private:
+  void throwIfAnyRank(const std::string& localError) const;
+  std::string stepName(int index) const;
+  std::string gridXml(int index, double time, const std::vector<CellField>& fields) const;
+  void writeXmlFiles(int index, double time, const std::vector<CellField>& fields);
+
+  MPI_Comm comm_ = MPI_COMM_NULL;
+  std::string dir_, base_;
+  int dim_ = 0, rank_ = 0;
+  bool haveTopology_ = false;
+  long long nOwnedNodes_ = 0, nOwnedCells_ = 0;  // this rank
+  long long nodeOffset_ = 0, cellOffset_ = 0;    // first global id owned by this rank
+  long long nNodes_ = 0, nCells_ = 0;            // global totals
+  std::vector<long long> connectivity_;
+  std::vector<std::pair<int, double>> dumps_;    // (index, time) in the collection, rank 0 only
+};
+
+}  // namespace unilag::io

@@ -1,0 +1,321 @@
+#include "mesh/DistributedMesh.hpp"
+
+#include <algorithm>
+#include <map>
+#include <numeric>
+#include <unordered_map>
+
+#include <mpi.h>
+
+#include <Teuchos_DefaultMpiComm.hpp>
+#include <Tpetra_Map_decl.hpp>
+#include <Zoltan2_PartitioningProblem.hpp>
+#include <Zoltan2_XpetraMultiVectorAdapter.hpp>
+
+namespace unilag
+{
+namespace
+{
+
+MPI_Comm rawComm(const Teuchos::RCP<const Comm>& comm)
+{
+    auto mpi = Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(comm);
+    return mpi.is_null() ? MPI_COMM_SELF : (*mpi->getRawMpiComm())();
+}
+
+void broadcastNames(std::vector<std::string>& names, MPI_Comm comm)
+{
+    std::string packed;
+    for (const auto& n : names)
+        packed += n + '\n';
+    int len = int(packed.size());
+    MPI_Bcast(&len, 1, MPI_INT, 0, comm);
+    packed.resize(len);
+    MPI_Bcast(packed.data(), len, MPI_CHAR, 0, comm);
+    names.clear();
+    std::size_t start = 0, nl;
+    while ((nl = packed.find('\n', start)) != std::string::npos)
+    {
+        names.push_back(packed.substr(start, nl - start));
+        start = nl + 1;
+    }
+}
+
+Teuchos::RCP<const Map> mapOf(const std::vector<GO>& gids, const Teuchos::RCP<const Comm>& comm)
+{
+    const auto INV = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
+    return Teuchos::rcp(new Map(INV, Teuchos::ArrayView<const GO>(gids.data(), gids.size()), 0, comm));
+}
+
+} // namespace
+
+std::shared_ptr<DistributedMesh> DistributedMesh::distribute(const GlobalMesh& root, Teuchos::RCP<const Comm> comm)
+{
+    auto mesh = std::make_shared<DistributedMesh>();
+    mesh->comm = comm;
+    MPI_Comm mpi = rawComm(comm);
+    const int rank = comm->getRank();
+    const bool isRoot = rank == 0;
+
+    long long header[3] = {root.dim, (long long)root.nCells(), (long long)root.nNodes()};
+    MPI_Bcast(header, 3, MPI_LONG_LONG, 0, mpi);
+    mesh->dim = int(header[0]);
+    mesh->nv = mesh->dim + 1;
+    mesh->nGlobalCells = header[1];
+    mesh->nGlobalNodes = header[2];
+    mesh->regionNames = root.regionNames;
+    mesh->boundaryNames = root.boundaryNames;
+    broadcastNames(mesh->regionNames, mpi);
+    broadcastNames(mesh->boundaryNames, mpi);
+    const int nv = mesh->nv, dim = mesh->dim;
+
+    // Everything starts on rank 0.
+    auto rootCells = Teuchos::rcp(new Map(mesh->nGlobalCells, isRoot ? mesh->nGlobalCells : 0, 0, comm));
+    auto rootNodes = Teuchos::rcp(new Map(mesh->nGlobalNodes, isRoot ? mesh->nGlobalNodes : 0, 0, comm));
+    MV records(rootCells, 1 + 2 * nv);
+    MV coords(rootNodes, 3);
+    MV centroids(rootCells, dim);
+    if (isRoot)
+    {
+        auto r = records.getLocalViewHost(Tpetra::Access::OverwriteAll);
+        auto x = coords.getLocalViewHost(Tpetra::Access::OverwriteAll);
+        auto c = centroids.getLocalViewHost(Tpetra::Access::OverwriteAll);
+        for (std::size_t n = 0; n < root.nNodes(); ++n)
+            for (int d = 0; d < 3; ++d)
+                x(n, d) = root.coords[3 * n + d];
+        for (std::size_t i = 0; i < root.nCells(); ++i)
+        {
+            r(i, 0) = root.cellRegion[i];
+            for (int k = 0; k < nv; ++k)
+            {
+                const int node = root.cells[nv * i + k];
+                r(i, 1 + k) = node; // gids up to 2^53 travel exactly as doubles
+                r(i, 1 + nv + k) = root.cellFaceGroup[nv * i + k];
+                for (int d = 0; d < dim; ++d)
+                    c(i, d) += root.coords[3 * node + d] / nv;
+            }
+        }
+    }
+
+    // Zoltan2 multijagged on cell centroids.
+    Teuchos::RCP<const Map> owned = rootCells;
+    if (comm->getSize() > 1)
+    {
+        using Adapter = Zoltan2::XpetraMultiVectorAdapter<MV>;
+        auto xc = Teuchos::rcpFromRef(centroids);
+        Adapter adapter(xc);
+        Teuchos::ParameterList zp("zoltan2");
+        zp.set("algorithm", "multijagged");
+        zp.set("imbalance_tolerance", 1.05);
+        zp.set("num_global_parts", comm->getSize());
+        Zoltan2::PartitioningProblem<Adapter> problem(&adapter, &zp, comm);
+        problem.solve();
+        Teuchos::RCP<MV> moved;
+        adapter.applyPartitioningSolution(centroids, moved, problem.getSolution());
+        auto list = moved->getMap()->getNodeElementList();
+        std::vector<GO> gids(list.begin(), list.end());
+        std::sort(gids.begin(), gids.end());
+        owned = mapOf(gids, comm);
+    }
+    MV mine(owned, 1 + 2 * nv);
+    mine.doImport(records, Importer(rootCells, owned), Tpetra::INSERT);
+
+    OwnedCells oc;
+    {
+        auto r = mine.getLocalViewHost(Tpetra::Access::ReadOnly);
+        const LO n = LO(owned->getNodeNumElements());
+        for (LO i = 0; i < n; ++i)
+        {
+            oc.gid.push_back(owned->getGlobalElement(i));
+            oc.region.push_back(int(r(i, 0)));
+            for (int k = 0; k < nv; ++k)
+            {
+                oc.nodes.push_back(GO(r(i, 1 + k)));
+                oc.groups.push_back(int(r(i, 1 + nv + k)));
+            }
+        }
+    }
+    mesh->buildFromOwnedCells(oc, coords);
+    return mesh;
+}
+
+void DistributedMesh::buildFromOwnedCells(const OwnedCells& oc, const MV& rootCoords)
+{
+    MPI_Comm mpi = rawComm(comm);
+    const int nranks = comm->getSize();
+    const LO nOwn = LO(oc.gid.size());
+    cellMap = mapOf(oc.gid, comm);
+
+    // Node ownership: one rank among those owning a cell around the node.
+    std::vector<GO> touched(oc.nodes);
+    std::sort(touched.begin(), touched.end());
+    touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
+    auto ownedNodesMap = Tpetra::createOneToOne(mapOf(touched, comm));
+    std::vector<GO> ownedNodes(ownedNodesMap->getNodeElementList().begin(), ownedNodesMap->getNodeElementList().end());
+    std::sort(ownedNodes.begin(), ownedNodes.end());
+    nodeMap = mapOf(ownedNodes, comm);
+
+    // Ghosts: send every (node, cell record) to the node's owner, which then knows all cells around it.
+    std::vector<int> owner(oc.nodes.size());
+    {
+        // query each distinct node once (the directory lookup does not like repeated ids)
+        Teuchos::Array<int> pids(touched.size());
+        nodeMap->getRemoteIndexList(Teuchos::ArrayView<const GO>(touched.data(), touched.size()), pids());
+        for (std::size_t q = 0; q < oc.nodes.size(); ++q)
+            owner[q] = pids[std::lower_bound(touched.begin(), touched.end(), oc.nodes[q]) - touched.begin()];
+    }
+    const int L = 3 + 2 * nv; // node, cell gid, region, nodes, groups
+    std::vector<int> sendCount(nranks, 0), recvCount(nranks), sdispl(nranks + 1, 0), rdispl(nranks + 1, 0);
+    for (std::size_t q = 0; q < oc.nodes.size(); ++q)
+        sendCount[owner[q]] += L;
+    for (int p = 0; p < nranks; ++p)
+        sdispl[p + 1] = sdispl[p] + sendCount[p];
+    std::vector<long long> sendBuf(sdispl[nranks]);
+    {
+        std::vector<int> pos(sdispl.begin(), sdispl.end() - 1);
+        for (LO i = 0; i < nOwn; ++i)
+            for (int k = 0; k < nv; ++k)
+            {
+                const std::size_t q = std::size_t(nv) * i + k;
+                long long* rec = &sendBuf[pos[owner[q]]];
+                pos[owner[q]] += L;
+                rec[0] = oc.nodes[q];
+                rec[1] = oc.gid[i];
+                rec[2] = oc.region[i];
+                for (int j = 0; j < nv; ++j)
+                {
+                    rec[3 + j] = oc.nodes[std::size_t(nv) * i + j];
+                    rec[3 + nv + j] = oc.groups[std::size_t(nv) * i + j];
+                }
+            }
+    }
+    MPI_Alltoall(sendCount.data(), 1, MPI_INT, recvCount.data(), 1, MPI_INT, mpi);
+    for (int p = 0; p < nranks; ++p)
+        rdispl[p + 1] = rdispl[p] + recvCount[p];
+    std::vector<long long> recvBuf(rdispl[nranks]);
+    MPI_Alltoallv(sendBuf.data(), sendCount.data(), sdispl.data(), MPI_LONG_LONG, recvBuf.data(), recvCount.data(),
+                  rdispl.data(), MPI_LONG_LONG, mpi);
+
+    std::map<GO, std::size_t> ghostRecord; // gid -> offset in recvBuf
+    {
+        std::unordered_map<GO, LO> isOwned;
+        for (LO i = 0; i < nOwn; ++i)
+            isOwned[oc.gid[i]] = i;
+        for (std::size_t off = 0; off < recvBuf.size(); off += L)
+            if (!isOwned.count(recvBuf[off + 1]))
+                ghostRecord.emplace(recvBuf[off + 1], off);
+    }
+
+    // Local cells: owned (sorted) then ghosts (sorted).
+    nOwnedCells = nOwn;
+    nCells = nOwn + LO(ghostRecord.size());
+    cellGid = oc.gid;
+    cellRegion = oc.region;
+    std::vector<GO> cellNodeGid(oc.nodes);
+    cellFaceGroupHost = oc.groups;
+    for (const auto& [gid, off] : ghostRecord)
+    {
+        cellGid.push_back(gid);
+        cellRegion.push_back(int(recvBuf[off + 2]));
+        for (int j = 0; j < nv; ++j)
+        {
+            cellNodeGid.push_back(recvBuf[off + 3 + j]);
+            cellFaceGroupHost.push_back(int(recvBuf[off + 3 + nv + j]));
+        }
+    }
+    cellMapOverlap = mapOf(cellGid, comm);
+
+    // Local nodes: owned (sorted) then the other nodes of local cells (sorted).
+    std::vector<GO> others;
+    {
+        std::vector<GO> all(cellNodeGid);
+        std::sort(all.begin(), all.end());
+        all.erase(std::unique(all.begin(), all.end()), all.end());
+        std::set_difference(all.begin(), all.end(), ownedNodes.begin(), ownedNodes.end(), std::back_inserter(others));
+    }
+    nodeGid = ownedNodes;
+    nodeGid.insert(nodeGid.end(), others.begin(), others.end());
+    nOwnedNodes = LO(ownedNodes.size());
+    nNodes = LO(nodeGid.size());
+    nodeMapOverlap = mapOf(nodeGid, comm);
+    cellImporter = Teuchos::rcp(new Importer(cellMap, cellMapOverlap));
+    nodeImporter = Teuchos::rcp(new Importer(nodeMap, nodeMapOverlap));
+
+    std::unordered_map<GO, LO> nodeLid;
+    for (LO n = 0; n < nNodes; ++n)
+        nodeLid[nodeGid[n]] = n;
+    cellNodesHost.resize(cellNodeGid.size());
+    for (std::size_t q = 0; q < cellNodeGid.size(); ++q)
+        cellNodesHost[q] = nodeLid.at(cellNodeGid[q]);
+
+    // Coordinates of all local nodes.
+    {
+        MV x(nodeMapOverlap, 3);
+        x.doImport(rootCoords, Importer(rootCoords.getMap(), nodeMapOverlap), Tpetra::INSERT);
+        auto xh = x.getLocalViewHost(Tpetra::Access::ReadOnly);
+        coords0.resize(3 * std::size_t(nNodes));
+        for (LO n = 0; n < nNodes; ++n)
+            for (int d = 0; d < 3; ++d)
+                coords0[3 * n + d] = xh(n, d);
+    }
+
+    // Node -> corner CSR, corners sorted by (global cell id, local node).
+    std::vector<LO> offsets(nNodes + 1, 0);
+    for (LO q = 0; q < LO(cellNodesHost.size()); ++q)
+        ++offsets[cellNodesHost[q] + 1];
+    std::partial_sum(offsets.begin(), offsets.end(), offsets.begin());
+    std::vector<LO> corners(cellNodesHost.size());
+    {
+        std::vector<LO> pos(offsets.begin(), offsets.end() - 1);
+        for (LO q = 0; q < LO(cellNodesHost.size()); ++q)
+            corners[pos[cellNodesHost[q]]++] = q;
+        for (LO n = 0; n < nNodes; ++n)
+            std::sort(corners.begin() + offsets[n], corners.begin() + offsets[n + 1], [&](LO a, LO b) {
+                return std::make_pair(cellGid[a / nv], a % nv) < std::make_pair(cellGid[b / nv], b % nv);
+            });
+    }
+
+    // Device copies.
+    cellNodes = Kokkos::View<LO**, Kokkos::LayoutLeft, MemSpace>("unilag::cellNodes", nCells, nv);
+    cellFaceGroup = View<int**>("unilag::cellFaceGroup", nCells, nv);
+    nodeCornerOffsets = View<LO*>("unilag::nodeCornerOffsets", nNodes + 1);
+    nodeCorners = View<LO*>("unilag::nodeCorners", corners.size());
+    {
+        auto cn = Kokkos::create_mirror_view(cellNodes);
+        auto fg = Kokkos::create_mirror_view(cellFaceGroup);
+        for (LO i = 0; i < nCells; ++i)
+            for (int k = 0; k < nv; ++k)
+            {
+                cn(i, k) = cellNodesHost[std::size_t(nv) * i + k];
+                fg(i, k) = cellFaceGroupHost[std::size_t(nv) * i + k];
+            }
+        Kokkos::deep_copy(cellNodes, cn);
+        Kokkos::deep_copy(cellFaceGroup, fg);
+        Kokkos::deep_copy(nodeCornerOffsets,
+                          Kokkos::View<const LO*, Kokkos::HostSpace, Kokkos::MemoryUnmanaged>(offsets.data(), offsets.size()));
+        Kokkos::deep_copy(nodeCorners,
+                          Kokkos::View<const LO*, Kokkos::HostSpace, Kokkos::MemoryUnmanaged>(corners.data(), corners.size()));
+    }
+
+    // Output numbering: contiguous per rank for owned nodes, imported for the others.
+    long long nOwnedLL = nOwnedNodes;
+    nodeOutputOffset = 0;
+    MPI_Exscan(&nOwnedLL, &nodeOutputOffset, 1, MPI_LONG_LONG, MPI_SUM, mpi);
+    if (comm->getRank() == 0)
+        nodeOutputOffset = 0;
+    {
+        MV ids(nodeMap, 1), idsOv(nodeMapOverlap, 1);
+        {
+            auto h = ids.getLocalViewHost(Tpetra::Access::OverwriteAll);
+            for (LO n = 0; n < nOwnedNodes; ++n)
+                h(n, 0) = double(nodeOutputOffset + n);
+        }
+        idsOv.doImport(ids, *nodeImporter, Tpetra::INSERT);
+        auto h = idsOv.getLocalViewHost(Tpetra::Access::ReadOnly);
+        nodeOutputId.resize(nNodes);
+        for (LO n = 0; n < nNodes; ++n)
+            nodeOutputId[n] = (long long)h(n, 0);
+    }
+}
+
+} // namespace unilag

@@ -1,0 +1,98 @@
+/*! \file DistributedMesh.hpp
+ *  \brief The mesh distributed over MPI ranks on Tpetra maps, with one layer of node-neighbour ghost cells.
+ *
+ *  Ownership: Zoltan2 (multijagged, cell centroids) assigns cells to ranks; each node is owned by one rank
+ *  that owns a cell around it (Tpetra::createOneToOne). Ghost cells are all cells around owned nodes that the
+ *  rank does not own, so the nodal solver at an owned node sees every cell of its corners locally.
+ *  Local numbering is owned-first: cells [0, nOwnedCells) then ghosts, nodes [0, nOwnedNodes) then the other
+ *  nodes of local cells, each part sorted by global id. Node->corner lists are sorted by global cell id, so
+ *  every node sum adds the same numbers in the same order on any number of ranks and threads.
+ *
+ *  The same construction (buildFromOwnedCells) serves a later repartitioning: move the owned cell records with
+ *  a Tpetra Import to the new owners, then rebuild ghosts, maps and plans.
+ */
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+#include <Teuchos_Comm.hpp>
+#include <Teuchos_RCP.hpp>
+#include <Tpetra_Import.hpp>
+#include <Tpetra_Map.hpp>
+#include <Tpetra_MultiVector.hpp>
+
+#include "mesh/GlobalMesh.hpp"
+#include "unilag/Geometry.hpp"
+
+namespace unilag
+{
+
+using Map = Tpetra::Map<LO>;
+using GO = Map::global_ordinal_type;
+using MV = Tpetra::MultiVector<double, LO, GO>;
+using Importer = Tpetra::Import<LO, GO>;
+using Comm = Teuchos::Comm<int>;
+
+class DistributedMesh
+{
+  public:
+    /*! \brief Partition and distribute a mesh that lives on rank 0 (root is ignored on other ranks).
+     *  Collective. */
+    static std::shared_ptr<DistributedMesh> distribute(const GlobalMesh& root, Teuchos::RCP<const Comm> comm);
+
+    int dim = 0, nv = 0;
+    Teuchos::RCP<const Comm> comm;
+    Teuchos::RCP<const Map> cellMap, cellMapOverlap, nodeMap, nodeMapOverlap;
+    Teuchos::RCP<const Importer> cellImporter; //!< owned cells -> owned + ghost cells
+    Teuchos::RCP<const Importer> nodeImporter; //!< owned nodes -> all local nodes
+
+    LO nOwnedCells = 0, nCells = 0, nOwnedNodes = 0, nNodes = 0;
+    GO nGlobalCells = 0, nGlobalNodes = 0;
+    std::vector<std::string> regionNames, boundaryNames;
+
+    // Host copies (local numbering).
+    std::vector<GO> cellGid, nodeGid;
+    std::vector<int> cellRegion;
+    std::vector<LO> cellNodesHost;   //!< nv per cell
+    std::vector<int> cellFaceGroupHost; //!< nv per cell
+    std::vector<double> coords0;     //!< initial node coordinates, 3 per local node
+
+    // Device views for the kernels.
+    Kokkos::View<LO**, Kokkos::LayoutLeft, MemSpace> cellNodes;
+    View<int**> cellFaceGroup;
+    View<LO*> nodeCornerOffsets, nodeCorners;
+
+    //! Output numbering: owned nodes get offset + local index; other local nodes that of their owner.
+    long long nodeOutputOffset = 0;
+    std::vector<long long> nodeOutputId;
+
+    template <int D>
+    MeshView<D> view() const
+    {
+        MeshView<D> m;
+        m.cellNodes = cellNodes;
+        m.nodeCornerOffsets = nodeCornerOffsets;
+        m.nodeCorners = nodeCorners;
+        m.cellFaceGroup = cellFaceGroup;
+        m.nOwnedCells = nOwnedCells;
+        m.nCells = nCells;
+        m.nOwnedNodes = nOwnedNodes;
+        m.nNodes = nNodes;
+        return m;
+    }
+
+  private:
+    //! Cell records (region, node gids, face groups) of the cells this rank owns, sorted by gid.
+    struct OwnedCells
+    {
+        std::vector<GO> gid;
+        std::vector<int> region;
+        std::vector<GO> nodes;   //!< nv per cell
+        std::vector<int> groups; //!< nv per cell
+    };
+    void buildFromOwnedCells(const OwnedCells& owned, const MV& rootCoords);
+};
+
+} // namespace unilag

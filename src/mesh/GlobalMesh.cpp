@@ -1,0 +1,261 @@
+#include "mesh/GlobalMesh.hpp"
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <map>
+#include <unordered_map>
+
+#include <gmsh.h>
+
+#include "io/Scene.hpp"
+
+namespace unilag
+{
+namespace
+{
+
+std::string gmshError()
+{
+    std::string err;
+    try
+    {
+        gmsh::logger::getLastError(err);
+    }
+    catch (...)
+    {
+    }
+    return err.empty() ? "gmsh failed" : err;
+}
+
+double signedMeasure(int dim, const double* a, const double* b, const double* c, const double* d)
+{
+    if (dim == 2)
+        return 0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
+    const double e1[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+    const double e2[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    const double e3[3] = {d[0] - a[0], d[1] - a[1], d[2] - a[2]};
+    return (e1[0] * (e2[1] * e3[2] - e2[2] * e3[1]) - e1[1] * (e2[0] * e3[2] - e2[2] * e3[0]) +
+            e1[2] * (e2[0] * e3[1] - e2[1] * e3[0])) /
+           6.0;
+}
+
+using FaceKey = std::array<int, 3>; // sorted node indices; third = -1 in 2D
+
+FaceKey faceKey(const int* nodes, int n)
+{
+    // sorting network for 2 or 3 entries
+    FaceKey k{nodes[0], nodes[1], n == 3 ? nodes[2] : -1};
+    if (k[0] > k[1])
+        std::swap(k[0], k[1]);
+    if (n == 3)
+    {
+        if (k[1] > k[2])
+            std::swap(k[1], k[2]);
+        if (k[0] > k[1])
+            std::swap(k[0], k[1]);
+    }
+    return k;
+}
+
+void extract(const std::string& source, GlobalMesh& m)
+{
+    m.dim = gmsh::model::getDimension();
+    if (m.dim != 2 && m.dim != 3)
+        throw InputError(source + ": the mesh must be 2D (triangles) or 3D (tetrahedra); gmsh model dimension is " +
+                         std::to_string(m.dim));
+    const int nv = m.nv();
+
+    std::vector<std::size_t> nodeTags;
+    std::vector<double> xyz, uvw;
+    gmsh::model::mesh::getNodes(nodeTags, xyz, uvw, -1, -1, false, false);
+    std::unordered_map<std::size_t, int> index;
+    index.reserve(nodeTags.size());
+    for (std::size_t i = 0; i < nodeTags.size(); ++i)
+        index[nodeTags[i]] = int(i);
+    m.coords = xyz;
+    if (m.dim == 2)
+        for (std::size_t i = 0; i < nodeTags.size(); ++i)
+            if (std::abs(xyz[3 * i + 2]) > 0.0)
+                throw InputError(source + ": node " + std::to_string(nodeTags[i]) +
+                                 " has z != 0; a 2D mesh must lie in the plane z = 0");
+
+    const int cellType = gmsh::model::mesh::getElementType(m.dim == 2 ? "Triangle" : "Tetrahedron", 1);
+    gmsh::vectorpair groups;
+    gmsh::model::getPhysicalGroups(groups, m.dim);
+    if (groups.empty())
+        throw InputError(source + ": no physical group of " + (m.dim == 2 ? "surfaces" : "volumes") +
+                         " (the scene's regions name them)");
+    std::unordered_map<std::size_t, int> cellOfTag;
+    for (const auto& [dim, tag] : groups)
+    {
+        std::string name;
+        gmsh::model::getPhysicalName(dim, tag, name);
+        if (name.empty())
+            name = std::to_string(tag);
+        const int region = int(m.regionNames.size());
+        m.regionNames.push_back(name);
+        std::vector<int> entities;
+        gmsh::model::getEntitiesForPhysicalGroup(dim, tag, entities);
+        for (int e : entities)
+        {
+            std::vector<std::size_t> tags, nodes;
+            gmsh::model::mesh::getElementsByType(cellType, tags, nodes, e);
+            // Orientation: gmsh orients each entity consistently, possibly clockwise. A cell whose sign differs
+            // from the rest of its entity is folded over (inverted); a whole entity of negative sign is flipped.
+            const std::size_t first = m.nCells();
+            int nNeg = 0, nPos = 0;
+            double meanAbs = 0.0;
+            std::vector<double> vol(tags.size());
+            for (std::size_t c = 0; c < tags.size(); ++c)
+            {
+                if (cellOfTag.count(tags[c]))
+                    throw InputError(source + ": element " + std::to_string(tags[c]) + " is in two regions");
+                cellOfTag[tags[c]] = int(first + c);
+                int idx[4] = {0, 0, 0, 0};
+                for (int k = 0; k < nv; ++k)
+                    idx[k] = index.at(nodes[nv * c + k]);
+                vol[c] = signedMeasure(m.dim, &xyz[3 * idx[0]], &xyz[3 * idx[1]], &xyz[3 * idx[2]],
+                                       &xyz[3 * idx[3]]);
+                (vol[c] < 0.0 ? nNeg : nPos)++;
+                meanAbs += std::abs(vol[c]);
+                m.cells.insert(m.cells.end(), idx, idx + nv);
+                m.cellTag.push_back(tags[c]);
+                m.cellRegion.push_back(region);
+            }
+            if (tags.empty())
+                continue;
+            meanAbs /= double(tags.size());
+            const bool flip = nNeg > nPos;
+            for (std::size_t c = 0; c < tags.size(); ++c)
+            {
+                if (std::abs(vol[c]) <= 1e-12 * meanAbs)
+                    throw InputError(source + ": element " + std::to_string(tags[c]) + " of region '" + name +
+                                     "' is degenerate (measure " + std::to_string(vol[c]) + ")");
+                if ((vol[c] < 0.0) != flip)
+                    throw InputError(source + ": element " + std::to_string(tags[c]) + " of region '" + name +
+                                     "' is inverted (signed measure " + std::to_string(vol[c]) +
+                                     " against the orientation of its neighbours)");
+                if (flip)
+                    std::swap(m.cells[nv * (first + c)], m.cells[nv * (first + c) + 1]);
+            }
+        }
+    }
+    if (m.nCells() == 0)
+        throw InputError(source + ": the mesh has no " + std::string(m.dim == 2 ? "triangles" : "tetrahedra"));
+
+    // Boundary groups: faces (lines in 2D, triangles in 3D) by sorted node indices.
+    std::map<FaceKey, int> boundaryFace;
+    gmsh::vectorpair bgroups;
+    gmsh::model::getPhysicalGroups(bgroups, m.dim - 1);
+    const int faceType = gmsh::model::mesh::getElementType(m.dim == 2 ? "Line" : "Triangle", 1);
+    for (const auto& [dim, tag] : bgroups)
+    {
+        std::string name;
+        gmsh::model::getPhysicalName(dim, tag, name);
+        if (name.empty())
+            name = std::to_string(tag);
+        const int g = int(m.boundaryNames.size());
+        m.boundaryNames.push_back(name);
+        std::vector<int> entities;
+        gmsh::model::getEntitiesForPhysicalGroup(dim, tag, entities);
+        for (int e : entities)
+        {
+            std::vector<std::size_t> tags, nodes;
+            gmsh::model::mesh::getElementsByType(faceType, tags, nodes, e);
+            for (std::size_t f = 0; f < tags.size(); ++f)
+            {
+                int idx[3] = {-1, -1, -1};
+                for (int k = 0; k < m.dim; ++k)
+                    idx[k] = index.at(nodes[m.dim * f + k]);
+                boundaryFace[faceKey(idx, m.dim)] = g;
+            }
+        }
+    }
+
+    // Face adjacency by sorting (key, cell, k): a key seen once is a boundary face.
+    struct FaceRef
+    {
+        FaceKey key;
+        int cell, k;
+    };
+    std::vector<FaceRef> faces;
+    faces.reserve(m.nCells() * nv);
+    for (std::size_t c = 0; c < m.nCells(); ++c)
+        for (int k = 0; k < nv; ++k)
+        {
+            int idx[3] = {-1, -1, -1}, n = 0;
+            for (int j = 0; j < nv; ++j)
+                if (j != k)
+                    idx[n++] = m.cells[nv * c + j];
+            faces.push_back({faceKey(idx, m.dim), int(c), k});
+        }
+    std::sort(faces.begin(), faces.end(), [](const FaceRef& a, const FaceRef& b) { return a.key < b.key; });
+    m.cellFaceGroup.assign(m.nCells() * nv, -1);
+    for (std::size_t i = 0; i < faces.size();)
+    {
+        std::size_t j = i + 1;
+        while (j < faces.size() && faces[j].key == faces[i].key)
+            ++j;
+        if (j - i > 2)
+            throw InputError(source + ": a face is shared by more than two elements (element " +
+                             std::to_string(m.cellTag[faces[i].cell]) + ")");
+        if (j - i == 1)
+        {
+            auto it = boundaryFace.find(faces[i].key);
+            if (it == boundaryFace.end())
+            {
+                std::string nodes;
+                for (int k = 0; k < m.dim; ++k)
+                    nodes += " " + std::to_string(nodeTags[faces[i].key[k]]);
+                throw InputError(source + ": boundary face (nodes" + nodes + ") of element " +
+                                 std::to_string(m.cellTag[faces[i].cell]) +
+                                 " is in no boundary physical group; name every boundary in the geometry");
+            }
+            m.cellFaceGroup[nv * faces[i].cell + faces[i].k] = it->second;
+        }
+        i = j;
+    }
+}
+
+} // namespace
+
+GlobalMesh loadMesh(const Scene& scene)
+{
+    const std::string source = scene.geometry.empty() ? scene.meshFile : scene.geometry;
+    GlobalMesh m;
+    gmsh::initialize(0, nullptr, false);
+    try
+    {
+        gmsh::option::setNumber("General.Terminal", 0);
+        gmsh::option::setNumber("General.NumThreads", 1);
+        try
+        {
+            gmsh::open(source);
+            if (!scene.geometry.empty())
+            {
+                // Uniform size from the scene: the .geo's own point sizes are ignored.
+                gmsh::option::setNumber("Mesh.MeshSizeFromPoints", 0);
+                gmsh::option::setNumber("Mesh.MeshSizeFromCurvature", 0);
+                gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
+                gmsh::option::setNumber("Mesh.MeshSizeMin", scene.meshSize);
+                gmsh::option::setNumber("Mesh.MeshSizeMax", scene.meshSize);
+                gmsh::model::mesh::generate(gmsh::model::getDimension());
+            }
+        }
+        catch (...)
+        {
+            throw InputError(source + ": " + gmshError());
+        }
+        extract(source, m);
+    }
+    catch (...)
+    {
+        gmsh::finalize();
+        throw;
+    }
+    gmsh::finalize();
+    return m;
+}
+
+} // namespace unilag

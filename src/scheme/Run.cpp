@@ -1,0 +1,807 @@
+#include "scheme/Run.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <sstream>
+#include <unistd.h>
+
+#include <mpi.h>
+
+#include <Teuchos_DefaultMpiComm.hpp>
+
+#include "io/XdmfWriter.hpp"
+#include "mesh/DistributedMesh.hpp"
+#include "physics/Exact.hpp"
+#include "physics/Expression.hpp"
+#include "unilag/Hydro.hpp"
+
+namespace unilag
+{
+namespace
+{
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+
+MPI_Comm rawComm(const Teuchos::RCP<const Comm>& comm)
+{
+    auto mpi = Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(comm);
+    return mpi.is_null() ? MPI_COMM_SELF : (*mpi->getRawMpiComm())();
+}
+
+//! The first non-empty message over the ranks (by rank), the same on every rank. Collective.
+std::string firstMessage(MPI_Comm comm, const std::string& local)
+{
+    int size;
+    MPI_Comm_size(comm, &size);
+    const int mine = int(local.size());
+    std::vector<int> lens(size);
+    MPI_Allgather(&mine, 1, MPI_INT, lens.data(), 1, MPI_INT, comm);
+    for (int p = 0; p < size; ++p)
+        if (lens[p] > 0)
+        {
+            std::string msg = local;
+            msg.resize(lens[p]);
+            MPI_Bcast(msg.data(), lens[p], MPI_CHAR, p, comm);
+            return msg;
+        }
+    return {};
+}
+
+double allMin(MPI_Comm comm, double v)
+{
+    double r;
+    MPI_Allreduce(&v, &r, 1, MPI_DOUBLE, MPI_MIN, comm);
+    return r;
+}
+
+template <int N>
+void allSum(MPI_Comm comm, double (&v)[N])
+{
+    MPI_Allreduce(MPI_IN_PLACE, v, N, MPI_DOUBLE, MPI_SUM, comm);
+}
+
+//! Phase timers (seconds), Laghos style.
+struct Timers
+{
+    double geometry = 0, nodal = 0, update = 0, halo = 0, io = 0, setup = 0;
+};
+
+class ScopedTimer
+{
+  public:
+    explicit ScopedTimer(double& acc) : acc_(acc), t0_(Clock::now()) {}
+    ~ScopedTimer()
+    {
+        Kokkos::fence();
+        acc_ += std::chrono::duration<double>(Clock::now() - t0_).count();
+    }
+
+  private:
+    double& acc_;
+    Clock::time_point t0_;
+};
+
+std::string jsonNumber(double v)
+{
+    if (!std::isfinite(v))
+        return "null";
+    std::ostringstream os;
+    os << std::setprecision(10) << v;
+    return os.str();
+}
+
+template <int D>
+class HydroSolver
+{
+    using S = HydroState<D>;
+
+  public:
+    HydroSolver(const Scene& scene, std::shared_ptr<DistributedMesh> mesh, const RunOptions& options)
+        : scene_(scene), mesh_(std::move(mesh)), options_(options), comm_(rawComm(mesh_->comm))
+    {
+        MPI_Comm_rank(comm_, &rank_);
+        MPI_Comm_size(comm_, &size_);
+        m_ = mesh_->view<D>();
+        const auto& dm = *mesh_;
+        state_ = Teuchos::rcp(new MV(dm.cellMapOverlap, S::ncomp));
+        stateNew_ = Teuchos::rcp(new MV(dm.cellMapOverlap, S::ncomp));
+        x_ = Teuchos::rcp(new MV(dm.nodeMapOverlap, D));
+        xNew_ = Teuchos::rcp(new MV(dm.nodeMapOverlap, D));
+        vnode_ = Teuchos::rcp(new MV(dm.nodeMapOverlap, D));
+        fnode_ = Field("unilag::fnode", dm.nOwnedNodes, D);
+        aux_ = Field("unilag::aux", dm.nCells, Aux::ncomp);
+        geom_ = CellGeometry(dm.nCells, D);
+        mass_ = View<double*>("unilag::mass", dm.nCells);
+        cellMaterial_ = View<int*>("unilag::cellMaterial", dm.nCells);
+    }
+
+    //! Initial conditions, masses and boundary table. Returns an error message ("" if fine). Collective.
+    std::string initialize()
+    {
+        const auto& dm = *mesh_;
+        std::string error;
+        // Boundary table by group id; every group of the mesh needs a condition.
+        {
+            const int ng = int(dm.boundaryNames.size());
+            View<int*> type("unilag::bcType", std::max(ng, 1));
+            Kokkos::View<double* [3], MemSpace> value("unilag::bcValue", std::max(ng, 1));
+            auto th = Kokkos::create_mirror_view(type);
+            auto vh = Kokkos::create_mirror_view(value);
+            for (int g = 0; g < ng; ++g)
+            {
+                auto it = scene_.boundaries.find(dm.boundaryNames[g]);
+                if (it == scene_.boundaries.end())
+                    return scene_.file + ": key 'boundaries': the mesh has a boundary group '" + dm.boundaryNames[g] +
+                           "' with no condition";
+                const auto& t = it->second.type;
+                th(g) = t == "velocity" ? BcVelocity : (t == "free" ? BcFree : BcSlipWall);
+                for (int d = 0; d < 3; ++d)
+                    vh(g, d) = it->second.velocity[d];
+            }
+            for (const auto& [name, spec] : scene_.boundaries)
+                if (std::find(dm.boundaryNames.begin(), dm.boundaryNames.end(), name) == dm.boundaryNames.end())
+                    return scene_.file + ": key 'boundaries." + name + "': the mesh has no boundary group '" + name + "'";
+            Kokkos::deep_copy(type, th);
+            Kokkos::deep_copy(value, vh);
+            bc_.type = type;
+            bc_.value = value;
+        }
+        // Materials, indexed in the order of the scene's map.
+        std::vector<std::string> matNames;
+        View<Material*> mats("unilag::materials", scene_.materials.size());
+        auto mh = Kokkos::create_mirror_view(mats);
+        for (const auto& [name, spec] : scene_.materials)
+        {
+            mh(matNames.size()) = Material{spec.gamma, spec.cv};
+            matNames.push_back(name);
+        }
+        Kokkos::deep_copy(mats, mh);
+        materials_ = mats;
+        for (const auto& name : dm.regionNames)
+            if (!scene_.regions.count(name))
+                return scene_.file + ": key 'regions': the mesh has a region '" + name + "' with no initial state";
+        for (const auto& [name, spec] : scene_.regions)
+            if (std::find(dm.regionNames.begin(), dm.regionNames.end(), name) == dm.regionNames.end())
+                return scene_.file + ": key 'regions." + name + "': the mesh has no region (physical group) '" + name + "'";
+
+        // Coordinates.
+        {
+            auto xh = x_->getLocalViewHost(Tpetra::Access::OverwriteAll);
+            for (LO n = 0; n < dm.nNodes; ++n)
+                for (int d = 0; d < D; ++d)
+                    xh(n, d) = dm.coords0[3 * n + d];
+        }
+        double vmin;
+        {
+            auto x = x_->getLocalViewDevice(Tpetra::Access::ReadOnly);
+            vmin = computeGeometry<D>(m_, x, geom_, dm.nCells);
+        }
+        if (!(vmin > 0.0))
+            return "internal: a cell of the distributed mesh has non-positive volume";
+
+        // Region states at cell centroids (owned and ghost cells alike, so no exchange is needed).
+        auto vol = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), geom_.volume);
+        auto massH = Kokkos::create_mirror_view(mass_);
+        auto matH = Kokkos::create_mirror_view(cellMaterial_);
+        auto sh = state_->getLocalViewHost(Tpetra::Access::OverwriteAll);
+        std::vector<double> pressure(dm.nCells), eps(dm.nCells);
+        for (std::size_t r = 0; r < dm.regionNames.size() && error.empty(); ++r)
+        {
+            const RegionSpec& spec = scene_.regions.at(dm.regionNames[r]);
+            const std::string key = "regions." + dm.regionNames[r] + ".";
+            if (spec.velocityComponents != 0 && spec.velocityComponents != D)
+            {
+                error = scene_.file + ": key '" + key + "velocity': the mesh is " + std::to_string(D) +
+                        "D, the velocity has " + std::to_string(spec.velocityComponents) + " components";
+                break;
+            }
+            auto compile = [](const Expr& e) { return e.isConstant() ? nullptr : std::make_unique<Expression>(e.text); };
+            auto rhoE = compile(spec.density);
+            auto thE = compile(spec.hasPressure ? spec.pressure : spec.internalEnergy);
+            std::unique_ptr<Expression> velE[3];
+            for (int d = 0; d < spec.velocityComponents; ++d)
+                velE[d] = compile(spec.velocity[d]);
+            const int mat = int(std::distance(scene_.materials.begin(), scene_.materials.find(spec.material)));
+            const MaterialSpec& ms = scene_.materials.at(spec.material);
+            for (LO i = 0; i < dm.nCells; ++i)
+            {
+                if (dm.cellRegion[i] != int(r))
+                    continue;
+                double c[3] = {0, 0, 0};
+                for (int k = 0; k < D + 1; ++k)
+                    for (int d = 0; d < D; ++d)
+                        c[d] += dm.coords0[3 * dm.cellNodesHost[(D + 1) * i + k] + d] / (D + 1);
+                auto eval = [&](const Expr& e, std::unique_ptr<Expression>& x) { return x ? (*x)(c[0], c[1], c[2]) : e.value; };
+                const double rho = eval(spec.density, rhoE);
+                const double th = eval(spec.hasPressure ? spec.pressure : spec.internalEnergy, thE);
+                const char* thKey = spec.hasPressure ? "pressure" : "specific_internal_energy";
+                if (!(rho > 0.0) || !std::isfinite(rho))
+                {
+                    error = scene_.file + ": key '" + key + "density': value " + std::to_string(rho) +
+                            " at cell " + std::to_string(dm.cellGid[i]) + " is not positive";
+                    break;
+                }
+                if (!(th >= 0.0) || !std::isfinite(th))
+                {
+                    error = scene_.file + ": key '" + key + thKey + "': value " + std::to_string(th) + " at cell " +
+                            std::to_string(dm.cellGid[i]) + " is negative";
+                    break;
+                }
+                double kin = 0.0;
+                for (int d = 0; d < D; ++d)
+                {
+                    const double v = d < spec.velocityComponents ? eval(spec.velocity[d], velE[d]) : 0.0;
+                    sh(i, S::vel + d) = v;
+                    kin += 0.5 * v * v;
+                }
+                eps[i] = spec.hasPressure ? th / ((ms.gamma - 1.0) * rho) : th;
+                sh(i, S::omega) = 1.0 / rho;
+                sh(i, S::energy) = eps[i] + kin;
+                massH(i) = rho * vol(i);
+                matH(i) = mat;
+            }
+        }
+        error = firstMessage(comm_, error);
+        if (!error.empty())
+            return error;
+
+        // Point energy deposit: into the cells around the node nearest to the point, uniform specific energy.
+        if (scene_.hasDeposit)
+        {
+            struct
+            {
+                double dist;
+                int rank;
+            } best{1e300, rank_}, global;
+            GO bestNode = -1;
+            for (LO n = 0; n < dm.nOwnedNodes; ++n)
+            {
+                double d2 = 0;
+                for (int d = 0; d < D; ++d)
+                    d2 += std::pow(dm.coords0[3 * n + d] - scene_.depositPosition[d], 2);
+                if (d2 < best.dist || (d2 == best.dist && dm.nodeGid[n] < bestNode))
+                {
+                    best.dist = d2;
+                    bestNode = dm.nodeGid[n];
+                }
+            }
+            MPI_Allreduce(&best, &global, 1, MPI_DOUBLE_INT, MPI_MINLOC, comm_);
+            long long node = bestNode;
+            MPI_Bcast(&node, 1, MPI_LONG_LONG, global.rank, comm_);
+            double m[1] = {0.0};
+            auto touches = [&](LO i) {
+                for (int k = 0; k < D + 1; ++k)
+                    if (dm.nodeGid[dm.cellNodesHost[(D + 1) * i + k]] == node)
+                        return true;
+                return false;
+            };
+            for (LO i = 0; i < dm.nOwnedCells; ++i)
+                if (touches(i))
+                    m[0] += massH(i);
+            allSum(comm_, m);
+            for (LO i = 0; i < dm.nCells; ++i)
+                if (touches(i))
+                    sh(i, S::energy) += scene_.depositEnergy / m[0];
+        }
+        Kokkos::deep_copy(mass_, massH);
+        Kokkos::deep_copy(cellMaterial_, matH);
+        return {};
+    }
+
+    //! Mass (sum of |T_i| / omega_i: tests the GCL), momentum, total energy, and sum m|v| over owned cells.
+    void totals(double (&out)[D + 3])
+    {
+        auto s = state_->getLocalViewDevice(Tpetra::Access::ReadOnly);
+        auto volume = geom_.volume;
+        auto mass = mass_;
+        auto sum = KOKKOS_LAMBDA(const LO i, double (&acc)[D + 3])
+        {
+            acc[0] += volume(i) / s(i, S::omega);
+            double v2 = 0.0;
+            for (int d = 0; d < D; ++d)
+            {
+                acc[1 + d] += mass(i) * s(i, S::vel + d);
+                v2 += s(i, S::vel + d) * s(i, S::vel + d);
+            }
+            acc[1 + D] += mass(i) * s(i, S::energy);
+            acc[2 + D] += mass(i) * Kokkos::Experimental::sqrt(v2);
+        };
+        sumReduce<D + 3>("unilag::diagnostics::totals", m_.nOwnedCells, sum, out);
+        allSum(comm_, out);
+    }
+
+    void refreshGeometry()
+    {
+        ScopedTimer t(timers_.geometry);
+        auto x = x_->getLocalViewDevice(Tpetra::Access::ReadOnly);
+        computeGeometry<D>(m_, x, geom_, m_.nCells);
+    }
+
+    int run()
+    {
+        const auto& dm = *mesh_;
+        const fs::path outDir = scene_.outputDirectory;
+        std::unique_ptr<io::XdmfWriter> writer;
+        if (scene_.writeOutput)
+        {
+            writer = std::make_unique<io::XdmfWriter>(comm_, outDir.string(), "unilag", D);
+            std::vector<long long> conn(std::size_t(dm.nOwnedCells) * (D + 1));
+            for (LO i = 0; i < dm.nOwnedCells; ++i)
+                for (int k = 0; k < D + 1; ++k)
+                    conn[(D + 1) * i + k] = dm.nodeOutputId[dm.cellNodesHost[(D + 1) * i + k]];
+            writer->setTopology(dm.nOwnedNodes, dm.nOwnedCells, conn);
+        }
+
+        refreshGeometry();
+        computeAux();
+        double initial[D + 3];
+        totals(initial);
+        double impulse[D] = {}, work = 0.0;
+        double t = 0.0, dtPrev = scene_.initialTimeStep;
+        long step = 0;
+        int dumps = 0, retries = 0;
+        double maxGcl = 0.0;
+        double nextOutput = scene_.outputInterval > 0 ? scene_.outputInterval : scene_.endTime;
+        if (writer)
+            dump(*writer, dumps++, t);
+
+        const auto wall0 = Clock::now();
+        auto lastReport = wall0;
+        const bool tty = isatty(fileno(stdout));
+        std::string failure;
+        const double tEnd = scene_.endTime;
+        while (t < tEnd * (1.0 - 1e-14) && step < scene_.maxSteps)
+        {
+            // 1. Nodal solve on the configuration at t^n (geometry and EOS are current for all local cells).
+            {
+                ScopedTimer timer(timers_.nodal);
+                auto s = state_->getLocalViewDevice(Tpetra::Access::ReadOnly);
+                auto v = vnode_->getLocalViewDevice(Tpetra::Access::ReadWrite);
+                nodalSolve<D>(m_, bc_, s, aux_, geom_, v, fnode_);
+            }
+            {
+                ScopedTimer timer(timers_.halo);
+                auto owned = vnode_->offsetViewNonConst(dm.nodeMap, 0);
+                vnode_->doImport(*owned, *dm.nodeImporter, Tpetra::INSERT);
+            }
+            // 2. Time step: CFL, volume change, growth, output times and the end time.
+            double dt;
+            {
+                ScopedTimer timer(timers_.nodal);
+                auto v = vnode_->getLocalViewDevice(Tpetra::Access::ReadOnly);
+                dt = allMin(comm_, stableTimeStep<D>(m_, aux_, geom_, v, scene_.cfl, scene_.maxVolumeChange));
+            }
+            if (!(dt > 0.0) || !std::isfinite(dt))
+            {
+                failure = "the stable time step is " + jsonNumber(dt) + " at t = " + jsonNumber(t);
+                break;
+            }
+            dt = dtPrev > 0.0 ? std::min(dt, scene_.maxGrowth * dtPrev) : 0.1 * dt;
+            const double target = std::min(nextOutput, tEnd);
+            if (t + dt > target * (1.0 - 1e-12))
+                dt = target - t;
+
+            // 3. Move nodes and update cells; reject steps that invert a cell or make the internal energy
+            //    non-positive, halving dt (node velocities do not depend on dt at first order).
+            UpdateCheck check{};
+            int attempt = 0;
+            for (;; ++attempt)
+            {
+                ScopedTimer timer(timers_.update);
+                auto x = x_->getLocalViewDevice(Tpetra::Access::ReadOnly);
+                auto xn = xNew_->getLocalViewDevice(Tpetra::Access::OverwriteAll);
+                auto v = vnode_->getLocalViewDevice(Tpetra::Access::ReadOnly);
+                auto s = state_->getLocalViewDevice(Tpetra::Access::ReadOnly);
+                auto sn = stateNew_->getLocalViewDevice(Tpetra::Access::ReadWrite);
+                moveNodes(x, v, dt, xn, m_.nNodes, D);
+                check = updateCells<D>(m_, s, aux_, geom_, mass_, x, xn, v, dt, sn);
+                double ext[3] = {-check.minVolumeRatio, -check.minInternalEnergy, check.maxGclDefect};
+                MPI_Allreduce(MPI_IN_PLACE, ext, 3, MPI_DOUBLE, MPI_MAX, comm_);
+                check.minVolumeRatio = -ext[0];
+                check.minInternalEnergy = -ext[1];
+                check.maxGclDefect = ext[2];
+                if (check.minVolumeRatio > 0.0 && check.minInternalEnergy > 0.0)
+                    break;
+                if (attempt >= scene_.maxRetries)
+                    break;
+                dt *= 0.5;
+                ++retries;
+            }
+            if (!(check.minVolumeRatio > 0.0 && check.minInternalEnergy > 0.0))
+            {
+                failure = diagnose(check, t, dt, attempt);
+                break;
+            }
+            maxGcl = std::max(maxGcl, check.maxGclDefect);
+            // 4. Boundary impulse and work (only nodes where a condition acts carry a net force).
+            {
+                auto v = vnode_->getLocalViewDevice(Tpetra::Access::ReadOnly);
+                auto f = fnode_;
+                auto sum = KOKKOS_LAMBDA(const LO r, double (&acc)[D + 1])
+                {
+                    for (int d = 0; d < D; ++d)
+                    {
+                        acc[d] += f(r, d);
+                        acc[D] += f(r, d) * v(r, d);
+                    }
+                };
+                double acc[D + 1];
+                sumReduce<D + 1>("unilag::diagnostics::boundary", m_.nOwnedNodes, sum, acc);
+                allSum(comm_, acc);
+                for (int d = 0; d < D; ++d)
+                    impulse[d] += dt * acc[d];
+                work += dt * acc[D];
+            }
+            {
+                ScopedTimer timer(timers_.halo);
+                auto owned = stateNew_->offsetViewNonConst(dm.cellMap, 0);
+                stateNew_->doImport(*owned, *dm.cellImporter, Tpetra::INSERT);
+            }
+            std::swap(state_, stateNew_);
+            std::swap(x_, xNew_);
+            t += dt;
+            dtPrev = dt;
+            ++step;
+            refreshGeometry();
+            computeAux();
+
+            if (writer && t >= nextOutput * (1.0 - 1e-12) && t < tEnd * (1.0 - 1e-14))
+            {
+                dump(*writer, dumps++, t);
+                nextOutput += scene_.outputInterval;
+            }
+            if (options_.progress && rank_ == 0)
+            {
+                const auto now = Clock::now();
+                const double since = std::chrono::duration<double>(now - lastReport).count();
+                if ((tty && since > 0.2) || since > 5.0)
+                {
+                    const double el = std::chrono::duration<double>(now - wall0).count();
+                    const double eta = el * (tEnd - t) / std::max(t, 1e-300);
+                    std::printf("%sstep %ld  t %.6g  dt %.3g  %5.1f%%  ETA %.0fs%s", tty ? "\r" : "", step, t, dt,
+                                100.0 * t / tEnd, eta, tty ? "   " : "\n");
+                    std::fflush(stdout);
+                    lastReport = now;
+                }
+            }
+        }
+        if (options_.progress && rank_ == 0 && tty)
+            std::printf("\n");
+        const double wall = std::chrono::duration<double>(Clock::now() - wall0).count();
+        if (failure.empty() && writer)
+            dump(*writer, dumps++, t);
+
+        // Conservation: mass from the geometry (GCL), momentum and energy net of boundary impulse and work.
+        double final_[D + 3];
+        totals(final_);
+        const double massChange = std::abs(final_[0] - initial[0]) / initial[0];
+        double dp = 0.0;
+        for (int d = 0; d < D; ++d)
+            dp += std::pow(final_[1 + d] - initial[1 + d] - impulse[d], 2);
+        const double momentumChange = std::sqrt(dp) / std::max(final_[2 + D] + initial[2 + D], 1e-300);
+        const double energyChange = std::abs(final_[1 + D] - initial[1 + D] - work) / std::abs(initial[1 + D]);
+
+        // Exact solution.
+        double l1 = -1.0, shock = -1.0;
+        if (scene_.exactSolution == "sedov" && failure.empty())
+        {
+            const RadialProfile exact(scene_.exactTable);
+            l1 = radialL1Density(exact);
+            shock = shockRadius(exact);
+        }
+
+        const GO cells = dm.nGlobalCells, nodes = dm.nGlobalNodes;
+        const double cellSteps = double(cells) * double(step) / std::max(wall, 1e-300);
+        std::ostringstream js;
+        js << "{\n  \"scene\": \"" << scene_.file << "\",\n  \"title\": \"" << scene_.name << "\",\n"
+           << "  \"status\": \"" << (failure.empty() ? "completed" : "unstable") << "\",\n"
+           << "  \"dimension\": " << D << ",\n  \"cells\": " << cells << ",\n  \"nodes\": " << nodes << ",\n"
+           << "  \"ranks\": " << size_ << ",\n  \"threads\": " << options_.threads << ",\n"
+           << "  \"steps\": " << step << ",\n  \"retries\": " << retries << ",\n"
+           << "  \"t_final\": " << jsonNumber(t) << ",\n  \"wall_seconds\": " << jsonNumber(wall) << ",\n"
+           << "  \"cell_steps_per_second\": " << jsonNumber(cellSteps) << ",\n"
+           << "  \"mass_relative_change\": " << jsonNumber(massChange) << ",\n"
+           << "  \"momentum_relative_change\": " << jsonNumber(momentumChange) << ",\n"
+           << "  \"energy_relative_change\": " << jsonNumber(energyChange) << ",\n"
+           << "  \"max_gcl_defect\": " << jsonNumber(maxGcl) << ",\n"
+           << "  \"boundary_work\": " << jsonNumber(work) << ",\n";
+        if (l1 >= 0.0)
+            js << "  \"l1_density_error\": " << jsonNumber(l1) << ",\n  \"shock_radius\": " << jsonNumber(shock)
+               << ",\n  \"exact_shock_radius\": " << jsonNumber(scene_.exactShockRadius) << ",\n";
+        js << "  \"time_share\": {\"geometry\": " << jsonNumber(timers_.geometry / wall)
+           << ", \"nodal_solve\": " << jsonNumber(timers_.nodal / wall)
+           << ", \"cell_update\": " << jsonNumber(timers_.update / wall)
+           << ", \"halo\": " << jsonNumber(timers_.halo / wall) << ", \"io\": " << jsonNumber(timers_.io / wall)
+           << "},\n";
+        if (!failure.empty())
+        {
+            std::string f = failure;
+            std::replace(f.begin(), f.end(), '"', '\'');
+            js << "  \"failure\": \"" << f << "\",\n";
+        }
+        js << "  \"output\": \"" << (writer ? writer->collectionPath() : std::string()) << "\"\n}\n";
+        if (rank_ == 0)
+        {
+            std::ofstream(outDir / "summary.json") << js.str();
+            std::printf("unilag: %s %dD, %lld cells, %d rank(s) x %d thread(s): %ld steps to t = %.6g in %.3g s "
+                        "(%.3g cell-steps/s); mass %.1e, momentum %.1e, energy %.1e",
+                        scene_.name.c_str(), D, (long long)cells, size_, options_.threads, step, t, wall, cellSteps,
+                        massChange, momentumChange, energyChange);
+            if (l1 >= 0.0)
+                std::printf("; L1(density) %.4g, shock radius %.4g", l1, shock);
+            std::printf("\nunilag: output in %s\n", (writer ? writer->collectionPath() : outDir.string()).c_str());
+        }
+        if (!failure.empty())
+        {
+            if (rank_ == 0)
+                std::fprintf(stderr, "unilag: error: the run went unstable: %s\n", failure.c_str());
+            return ExitUnstable;
+        }
+        if (options_.check)
+            return selfCheck(massChange, momentumChange, energyChange, maxGcl, l1, shock);
+        return ExitOk;
+    }
+
+  private:
+    void computeAux()
+    {
+        ScopedTimer timer(timers_.nodal);
+        auto s = state_->getLocalViewDevice(Tpetra::Access::ReadOnly);
+        computeEos<D>(s, cellMaterial_, materials_, aux_, m_.nCells);
+    }
+
+    std::string diagnose(const UpdateCheck& check, double t, double dt, int attempts)
+    {
+        std::string local;
+        if (check.worstCell >= 0)
+        {
+            const auto& dm = *mesh_;
+            const LO i = check.worstCell;
+            auto sn = stateNew_->getLocalViewHost(Tpetra::Access::ReadOnly);
+            auto vol = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), geom_.volume);
+            std::ostringstream os;
+            double c[3] = {0, 0, 0};
+            for (int k = 0; k < D + 1; ++k)
+                for (int d = 0; d < D; ++d)
+                    c[d] += dm.coords0[3 * dm.cellNodesHost[(D + 1) * i + k] + d] / (D + 1);
+            double kin = 0.0;
+            for (int d = 0; d < D; ++d)
+                kin += 0.5 * sn(i, S::vel + d) * sn(i, S::vel + d);
+            os << "cell " << dm.cellGid[i] << " (initial centroid " << c[0] << ", " << c[1] << ", " << c[2]
+               << ") at t = " << t << " after " << attempts << " halvings of dt (last dt " << dt
+               << "): volume ratio " << check.minVolumeRatio << ", specific internal energy "
+               << sn(i, S::energy) - kin << ", density " << 1.0 / sn(i, S::omega) << ", volume " << vol(i);
+            local = os.str();
+        }
+        return firstMessage(comm_, local);
+    }
+
+    int selfCheck(double massChange, double momentumChange, double energyChange, double gcl, double l1, double shock)
+    {
+        std::vector<std::string> fails;
+        auto bound = [&](const char* what, double value, double limit) {
+            if (!(value <= limit))
+            {
+                std::ostringstream os;
+                os << what << " = " << value << " exceeds " << limit;
+                fails.push_back(os.str());
+            }
+        };
+        // Round-off bounds: everything is conservative by construction.
+        bound("mass relative change", massChange, 1e-12);
+        bound("momentum relative change", momentumChange, 1e-12);
+        bound("energy relative change", energyChange, 1e-12);
+        bound("GCL defect |m omega - |T|| / |T|", gcl, 1e-12);
+        if (scene_.maxL1Density > 0.0)
+            bound("L1(density) error", l1, scene_.maxL1Density);
+        if (scene_.shockRadiusTolerance > 0.0)
+            bound("relative shock radius error", std::abs(shock - scene_.exactShockRadius) / scene_.exactShockRadius,
+                  scene_.shockRadiusTolerance);
+        if (rank_ == 0)
+        {
+            for (const auto& f : fails)
+                std::fprintf(stderr, "unilag: check failed: %s\n", f.c_str());
+            if (fails.empty())
+                std::printf("unilag: check passed\n");
+        }
+        return fails.empty() ? ExitOk : ExitCheck;
+    }
+
+    //! Volume-weighted mean |rho - rho_exact(|centroid|)| over the domain.
+    double radialL1Density(const RadialProfile& exact)
+    {
+        auto [r, rho, vol] = cellRadii();
+        double acc[2] = {0.0, 0.0};
+        for (std::size_t i = 0; i < r.size(); ++i)
+        {
+            acc[0] += vol[i] * std::abs(rho[i] - exact.density(r[i]));
+            acc[1] += vol[i];
+        }
+        allSum(comm_, acc);
+        return acc[0] / acc[1];
+    }
+
+    //! Radius where the shell-averaged density falls to half-way between its peak and the ambient value.
+    double shockRadius(const RadialProfile& exact)
+    {
+        auto [r, rho, vol] = cellRadii();
+        double hsum[2] = {0.0, double(r.size())};
+        {
+            auto len = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), geom_.length);
+            for (LO i = 0; i < m_.nOwnedCells; ++i)
+                hsum[0] += len(i);
+        }
+        allSum(comm_, hsum);
+        const double width = 2.0 * hsum[0] / hsum[1];
+        double rmax = 0.0;
+        for (double x : r)
+            rmax = std::max(rmax, x);
+        rmax = -allMin(comm_, -rmax);
+        const int nb = int(rmax / width) + 1;
+        std::vector<double> bins(2 * nb, 0.0);
+        for (std::size_t i = 0; i < r.size(); ++i)
+        {
+            const int b = std::min(nb - 1, int(r[i] / width));
+            bins[2 * b] += vol[i] * rho[i];
+            bins[2 * b + 1] += vol[i];
+        }
+        MPI_Allreduce(MPI_IN_PLACE, bins.data(), 2 * nb, MPI_DOUBLE, MPI_SUM, comm_);
+        std::vector<double> mean(nb, -1.0);
+        int peak = 0;
+        for (int b = 0; b < nb; ++b)
+            if (bins[2 * b + 1] > 0.0)
+            {
+                mean[b] = bins[2 * b] / bins[2 * b + 1];
+                if (mean[b] > mean[peak])
+                    peak = b;
+            }
+        const double ambient = exact.ambientDensity();
+        const double level = ambient + 0.5 * (mean[peak] - ambient);
+        for (int b = peak + 1; b < nb; ++b)
+            if (mean[b] >= 0.0 && mean[b] < level)
+            {
+                int a = b - 1;
+                while (a > peak && mean[a] < 0.0)
+                    --a;
+                const double ra = (a + 0.5) * width, rb = (b + 0.5) * width;
+                return ra + (rb - ra) * (mean[a] - level) / (mean[a] - mean[b]);
+            }
+        return (peak + 0.5) * width;
+    }
+
+    std::tuple<std::vector<double>, std::vector<double>, std::vector<double>> cellRadii()
+    {
+        const auto& dm = *mesh_;
+        auto xh = x_->getLocalViewHost(Tpetra::Access::ReadOnly);
+        auto sh = state_->getLocalViewHost(Tpetra::Access::ReadOnly);
+        auto vol = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), geom_.volume);
+        std::vector<double> r(dm.nOwnedCells), rho(dm.nOwnedCells), v(dm.nOwnedCells);
+        for (LO i = 0; i < dm.nOwnedCells; ++i)
+        {
+            double c[3] = {0, 0, 0};
+            for (int k = 0; k < D + 1; ++k)
+                for (int d = 0; d < D; ++d)
+                    c[d] += xh(dm.cellNodesHost[(D + 1) * i + k], d) / (D + 1);
+            r[i] = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+            rho[i] = 1.0 / sh(i, S::omega);
+            v[i] = vol(i);
+        }
+        return {r, rho, v};
+    }
+
+    void dump(io::XdmfWriter& writer, int index, double t)
+    {
+        ScopedTimer timer(timers_.io);
+        const auto& dm = *mesh_;
+        const LO n = dm.nOwnedCells;
+        auto xh = x_->getLocalViewHost(Tpetra::Access::ReadOnly);
+        auto sh = state_->getLocalViewHost(Tpetra::Access::ReadOnly);
+        auto ah = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), aux_);
+        auto vol = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), geom_.volume);
+        std::vector<double> coords(3 * std::size_t(dm.nOwnedNodes), 0.0);
+        for (LO r = 0; r < dm.nOwnedNodes; ++r)
+            for (int d = 0; d < D; ++d)
+                coords[3 * r + d] = xh(r, d);
+        std::vector<double> rho(n), p(n), vel(3 * std::size_t(n), 0.0), eps(n), volume(n), part(n, rank_), gid(n);
+        for (LO i = 0; i < n; ++i)
+        {
+            rho[i] = 1.0 / sh(i, S::omega);
+            p[i] = ah(i, Aux::pressure);
+            double kin = 0.0;
+            for (int d = 0; d < D; ++d)
+            {
+                vel[3 * i + d] = sh(i, S::vel + d);
+                kin += 0.5 * vel[3 * i + d] * vel[3 * i + d];
+            }
+            eps[i] = sh(i, S::energy) - kin;
+            volume[i] = vol(i);
+            gid[i] = double(dm.cellGid[i]);
+        }
+        writer.writeStep(index, t, coords,
+                         {{"density", 1, rho.data()},
+                          {"pressure", 1, p.data()},
+                          {"velocity", 3, vel.data()},
+                          {"specific_internal_energy", 1, eps.data()},
+                          {"volume", 1, volume.data()},
+                          {"rank", 1, part.data()},
+                          {"global_id", 1, gid.data()}});
+    }
+
+    const Scene& scene_;
+    std::shared_ptr<DistributedMesh> mesh_;
+    RunOptions options_;
+    MPI_Comm comm_;
+    int rank_ = 0, size_ = 1;
+    MeshView<D> m_;
+    Teuchos::RCP<MV> state_, stateNew_, x_, xNew_, vnode_;
+    Field fnode_, aux_;
+    CellGeometry geom_;
+    View<double*> mass_;
+    View<int*> cellMaterial_;
+    View<const Material*> materials_;
+    BoundaryView bc_;
+    Timers timers_;
+};
+
+template <int D>
+int runDim(const Scene& scene, std::shared_ptr<DistributedMesh> mesh, const RunOptions& options, MPI_Comm comm)
+{
+    HydroSolver<D> solver(scene, mesh, options);
+    const std::string error = solver.initialize();
+    int rank;
+    MPI_Comm_rank(comm, &rank);
+    if (!error.empty())
+    {
+        if (rank == 0)
+            std::fprintf(stderr, "unilag: error: %s\n", error.c_str());
+        return ExitInput;
+    }
+    // Only now, with the input fully validated, does anything get written.
+    if (rank == 0)
+    {
+        fs::create_directories(scene.outputDirectory);
+        writeScene(scene, (fs::path(scene.outputDirectory) / "scene.yaml").string());
+    }
+    MPI_Barrier(comm);
+    return solver.run();
+}
+
+} // namespace
+
+int runScene(const Scene& scene, const RunOptions& options, const Teuchos::RCP<const Comm>& comm)
+{
+    MPI_Comm mpi = rawComm(comm);
+    int rank;
+    MPI_Comm_rank(mpi, &rank);
+    GlobalMesh global;
+    std::string error;
+    if (rank == 0)
+    {
+        try
+        {
+            global = loadMesh(scene);
+        }
+        catch (const InputError& e)
+        {
+            error = e.what();
+        }
+    }
+    error = firstMessage(mpi, error);
+    if (!error.empty())
+    {
+        if (rank == 0)
+            std::fprintf(stderr, "unilag: error: %s\n", error.c_str());
+        return ExitInput;
+    }
+    auto mesh = DistributedMesh::distribute(global, comm);
+    global = GlobalMesh();
+    return mesh->dim == 2 ? runDim<2>(scene, mesh, options, mpi) : runDim<3>(scene, mesh, options, mpi);
+}
+
+} // namespace unilag
