@@ -55,6 +55,25 @@ class Node
     {
         throw InputError(file_ + ": key '" + join(key) + "': " + what);
     }
+    //! A required key is absent: the error also names a key present but not read that looks like a misspelling.
+    [[noreturn]] void missing(const std::string& key, const std::string& what) const
+    {
+        std::string best;
+        std::size_t bestD = 3;
+        for (auto it = list_.begin(); it != list_.end(); ++it)
+        {
+            const std::string& k = list_.name(it);
+            const std::size_t d = editDistance(k, key);
+            if (!used_.count(k) && d < bestD)
+            {
+                bestD = d;
+                best = k;
+            }
+        }
+        const std::string hint = best.empty() ? "" : "; found '" + join(best) + "': did you mean '" + join(key) + "'?";
+        fail(key, "missing " + what + hint);
+    }
+
     std::string join(const std::string& key) const { return path_.empty() ? key : path_ + "." + key; }
     bool has(const std::string& key) const { return list_.isParameter(key); }
 
@@ -64,7 +83,7 @@ class Node
         if (!list_.isParameter(key))
         {
             if (required)
-                fail(key, "missing (a section is required here)");
+                missing(key, "(a section is required here)");
             return Node(file_, join(key), empty_);
         }
         if (!list_.isSublist(key))
@@ -87,7 +106,7 @@ class Node
         if (!list_.isParameter(key))
         {
             if (required)
-                fail(key, "missing (a number is required)");
+                missing(key, "(a number is required)");
             return def;
         }
         const auto& e = list_.getEntry(key);
@@ -154,7 +173,7 @@ class Node
         if (!list_.isParameter(key))
         {
             if (required)
-                fail(key, "missing (a string is required)");
+                missing(key, "(a string is required)");
             return def;
         }
         const auto& e = list_.getEntry(key);
@@ -184,7 +203,7 @@ class Node
         if (!list_.isParameter(key))
         {
             if (required)
-                fail(key, "missing (a list like [0.0, 0.0] is required)");
+                missing(key, "(a list like [0.0, 0.0] is required)");
             return {};
         }
         const auto& e = list_.getEntry(key);
@@ -252,7 +271,7 @@ class Node
         if (!list_.isParameter(key))
         {
             if (required)
-                fail(key, "missing (a number or an expression of x, y, z, r is required)");
+                missing(key, "(a number or an expression of x, y, z, r is required)");
             return {};
         }
         const auto& e = list_.getEntry(key);
@@ -526,13 +545,12 @@ Scene readScene(const std::string& file, const std::vector<std::string>& overrid
     {
         Node x = root.sub("exact");
         s.exactSolution = x.choice("solution", "none", {"none", "sedov"});
-        if (s.exactSolution == "sedov")
-        {
-            s.exactTable = resolve(s.directory, x.text("table", "", true));
-            if (!fs::exists(s.exactTable))
-                x.fail("table", "file not found: " + s.exactTable);
-            s.exactShockRadius = x.positive("shock_radius", 0.0, true);
-        }
+        const bool sedov = s.exactSolution == "sedov";
+        s.exactTable = resolve(s.directory, x.text("table", "", sedov));
+        if (sedov && !fs::exists(s.exactTable))
+            x.fail("table", "file not found: " + s.exactTable);
+        s.exactShockRadius = x.positive("shock_radius", 1.0, sedov);
+        s.exactTime = x.positive("time", 1.0);
         s.maxL1Density = x.nonNegative("max_l1_density", 0.0);
         s.shockRadiusTolerance = x.nonNegative("shock_radius_tolerance", 0.0);
         x.rejectUnknown();

@@ -89,7 +89,8 @@ struct Scene
 
     std::string exactSolution = "none"; //!< none, sedov
     std::string exactTable;             //!< resolved path of a radial profile (csv)
-    double exactShockRadius = 0.0;
+    double exactShockRadius = 0.0;      //!< at exactTime
+    double exactTime = 1.0;             //!< time of the tabulated profile (self-similar scaling to other times)
     double maxL1Density = 0.0;          //!< --check bound, 0 = none
     double shockRadiusTolerance = 0.0;  //!< --check bound (relative), 0 = none
 
