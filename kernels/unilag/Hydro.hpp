@@ -122,9 +122,11 @@ void nodalSolve(const MeshView<D>& mesh, const BoundaryView& bc, const ConstFiel
     {
         Mat<D> M = Mat<D>::zero();
         Vec<D> b = Vec<D>::zero();
-        // Slip-wall normals, summed per boundary group (at most D distinct groups matter at one node).
-        int slipGroup[D + 1];
-        Vec<D> slipNormal[D + 1];
+        // Slip-wall normals, clustered by direction: faces whose normals differ by less than ~45 degrees (a
+        // curved or faceted wall) share one constraint; walls meeting at a corner or an edge give one each,
+        // whichever boundary groups they belong to.
+        constexpr int MaxSlip = 2 * D;
+        Vec<D> slipNormal[MaxSlip];
         int nSlip = 0;
         int imposed = -1;
         for (LO q = mesh.nodeCornerOffsets(r); q < mesh.nodeCornerOffsets(r + 1); ++q)
@@ -157,17 +159,25 @@ void nodalSolve(const MeshView<D>& mesh, const BoundaryView& bc, const ConstFiel
                 {
                     // outward area vector of face j is -D c_j
                     const Vec<D> n = (-double(D)) * cornerVec<D>(corner, i, j);
-                    int s = 0;
-                    while (s < nSlip && slipGroup[s] != g)
-                        ++s;
-                    if (s == nSlip && nSlip < D + 1)
+                    const double len = norm(n);
+                    int best = -1;
+                    double bestCos = 0.7;
+                    for (int s = 0; s < nSlip; ++s)
                     {
-                        slipGroup[nSlip] = g;
-                        slipNormal[nSlip] = Vec<D>::zero();
-                        ++nSlip;
+                        const double cosine = dot(n, slipNormal[s]) / (len * norm(slipNormal[s]));
+                        if (cosine > bestCos)
+                        {
+                            bestCos = cosine;
+                            best = s;
+                        }
                     }
-                    if (s < D + 1)
-                        slipNormal[s] = slipNormal[s] + n;
+                    if (best < 0 && nSlip < MaxSlip)
+                    {
+                        best = nSlip++;
+                        slipNormal[best] = Vec<D>::zero();
+                    }
+                    if (best >= 0)
+                        slipNormal[best] = slipNormal[best] + n;
                 }
             }
         }
