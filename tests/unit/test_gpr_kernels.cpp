@@ -1,0 +1,668 @@
+// GPR point-wise physics (kernels/unilag/Gpr.hpp): symmetric tensors and the Jacobi eigen-solver, the three
+// equations of state (inverse, isentropic sound speed, limits, the neo-Hookean sign), the elastic stress,
+// the exact strain relaxation (det, limits, eigenvectors, monotone decay, agreement with RK4 of the matrix
+// ODE), the plastic relaxation time, the heat relaxation, and a device (parallel_for / parallel_reduce) run.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <random>
+#include <vector>
+
+#include "unilag/Gpr.hpp"
+
+namespace
+{
+
+using namespace unilag::gpr;
+using M3 = std::array<std::array<double, 3>, 3>;
+
+M3 full(const Sym3& a)
+{
+    M3 m;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            m[i][j] = a(i, j);
+    return m;
+}
+
+M3 mul(const M3& a, const M3& b)
+{
+    M3 r{};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            for (int k = 0; k < 3; ++k)
+                r[i][j] += a[i][k] * b[k][j];
+    return r;
+}
+
+double maxAbs(const Sym3& a)
+{
+    double m = 0.0;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            m = std::max(m, std::fabs(a(i, j)));
+    return m;
+}
+
+double maxDiff(const Sym3& a, const Sym3& b)
+{
+    return maxAbs(a - b);
+}
+
+bool bitwiseEqual(const Sym3& a, const Sym3& b)
+{
+    return std::memcmp(&a, &b, sizeof(Sym3)) == 0;
+}
+
+//! Random rotation (orthonormal columns) from Gram-Schmidt of a Gaussian matrix.
+M3 randomRotation(std::mt19937& rng)
+{
+    std::normal_distribution<double> n(0.0, 1.0);
+    M3 q;
+    for (int k = 0; k < 3; ++k)
+    {
+        double v[3] = {n(rng), n(rng), n(rng)};
+        for (int p = 0; p < k; ++p)
+        {
+            const double d = v[0] * q[0][p] + v[1] * q[1][p] + v[2] * q[2][p];
+            for (int i = 0; i < 3; ++i)
+                v[i] -= d * q[i][p];
+        }
+        const double l = std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
+        for (int i = 0; i < 3; ++i)
+            q[i][k] = v[i] / l;
+    }
+    return q;
+}
+
+Sym3 withEigen(const M3& q, double l0, double l1, double l2)
+{
+    const double lam[3] = {l0, l1, l2};
+    double vec[3][3];
+    for (int i = 0; i < 3; ++i)
+        for (int k = 0; k < 3; ++k)
+            vec[i][k] = q[i][k];
+    return fromEigen(lam, vec);
+}
+
+//! Random SPD tensor A^T A with A = I + scale * N(0,1).
+Sym3 randomSpd(std::mt19937& rng, double scale)
+{
+    std::normal_distribution<double> n(0.0, 1.0);
+    M3 a;
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            a[i][j] = (i == j ? 1.0 : 0.0) + scale * n(rng);
+    M3 g{};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            for (int k = 0; k < 3; ++k)
+                g[i][j] += a[k][i] * a[k][j];
+    return Sym3{g[0][0], g[1][1], g[2][2], g[0][1], g[0][2], g[1][2]};
+}
+
+// ---- symmetric tensors and the eigen-solver ----
+
+TEST(GprSym3, HelpersMatchFullMatrices)
+{
+    std::mt19937 rng(3);
+    std::normal_distribution<double> n(0.0, 1.0);
+    for (int t = 0; t < 50; ++t)
+    {
+        const Sym3 a = randomSpd(rng, 0.7), b = randomSpd(rng, 0.7);
+        const M3 A = full(a), B = full(b), AB = mul(A, B), BA = mul(B, A);
+        EXPECT_DOUBLE_EQ(trace(a), A[0][0] + A[1][1] + A[2][2]);
+        const double detRef = A[0][0] * (A[1][1] * A[2][2] - A[1][2] * A[2][1]) -
+                              A[0][1] * (A[1][0] * A[2][2] - A[1][2] * A[2][0]) +
+                              A[0][2] * (A[1][0] * A[2][1] - A[1][1] * A[2][0]);
+        EXPECT_NEAR(det(a), detRef, 1e-13 * std::fabs(detRef));
+        EXPECT_NEAR(trace(dev(a)), 0.0, 1e-14 * trace(a));
+        EXPECT_NEAR(ddot(a, b), AB[0][0] + AB[1][1] + AB[2][2], 1e-13 * std::sqrt(norm2(a) * norm2(b)));
+        const Sym3 s = symProduct(a, b);
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j)
+                EXPECT_NEAR(s(i, j), 0.5 * (AB[i][j] + BA[i][j]), 1e-13 * maxAbs(a) * maxAbs(b));
+        // transport rate G L + L^T G with a general L
+        unilag::Mat<3> L;
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j)
+                L.a[i][j] = n(rng);
+        const Sym3 r = transportRate(a, L);
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j)
+            {
+                double ref = 0.0;
+                for (int k = 0; k < 3; ++k)
+                    ref += A[i][k] * L.a[k][j] + L.a[k][i] * A[k][j];
+                EXPECT_NEAR(r(i, j), ref, 1e-12 * maxAbs(a));
+            }
+    }
+    EXPECT_EQ(maxAbs(dev(identity(0.7))), 0.0); // exactly zero for an isotropic tensor
+}
+
+void checkEigen(const Sym3& a, double tolRec, double tolOrth)
+{
+    const Eigen3 e = eigen(a);
+    const double scale = maxAbs(a); // not the Frobenius norm: it underflows for the 1e-300 case
+    EXPECT_LE(maxDiff(fromEigen(e), a), tolRec * scale);
+    EXPECT_LE(e.value[0], e.value[1]);
+    EXPECT_LE(e.value[1], e.value[2]);
+    for (int k = 0; k < 3; ++k)
+        for (int l = 0; l < 3; ++l)
+        {
+            double d = 0.0;
+            for (int i = 0; i < 3; ++i)
+                d += e.vector[i][k] * e.vector[i][l];
+            EXPECT_NEAR(d, k == l ? 1.0 : 0.0, tolOrth);
+        }
+}
+
+TEST(GprSym3, EigenRandomSpd)
+{
+    std::mt19937 rng(11);
+    for (int t = 0; t < 2000; ++t)
+        checkEigen(randomSpd(rng, t % 2 ? 0.3 : 2.0), 1e-13, 1e-14);
+}
+
+TEST(GprSym3, EigenHardCases)
+{
+    std::mt19937 rng(5);
+    for (int t = 0; t < 200; ++t)
+    {
+        const M3 q = randomRotation(rng);
+        checkEigen(withEigen(q, 1.0, 1.0, 2.0), 1e-13, 1e-14);          // double eigenvalue
+        checkEigen(withEigen(q, 3.0, 3.0, 3.0 + 1e-12), 1e-13, 1e-14);  // nearly triple
+        checkEigen(withEigen(q, 1e-6, 1.0, 1e6), 1e-13, 1e-14);         // ill-conditioned
+        checkEigen(withEigen(q, -2.0, 0.5, 4.0), 1e-13, 1e-14);         // indefinite
+        checkEigen(withEigen(q, 1e-300, 2e-300, 3e-300), 1e-13, 1e-14); // tiny
+    }
+    checkEigen(identity(2.0), 0.0, 0.0);
+    checkEigen(Sym3{1.0, 2.0, 3.0, 0.0, 0.0, 0.0}, 0.0, 0.0);
+    checkEigen(Sym3{0.0, 0.0, 0.0, 0.0, 0.0, 0.0}, 0.0, 0.0);
+    checkEigen(Sym3{1.0, 1.0, 1.0, 1e-200, 0.0, 0.0}, 1e-15, 1e-15); // 45-degree rotation
+}
+
+// ---- equations of state ----
+
+EosParams copper()
+{
+    return mieGruneisenEos(8930.0, 3939.0, 2.0, 1.5, 390.0);
+}
+EosParams rubber()
+{
+    return neoHookeanEos(1100.0, 73.0, 1000.0);
+}
+
+TEST(EosInverse, IdealGas)
+{
+    const EosParams e = idealGasEos(1.4, 2.5);
+    for (double rho : {1e-3, 0.125, 1.0, 7.0, 1e3})
+        for (double eps : {1e-8, 1e-2, 1.0, 2.5e3})
+        {
+            const double p = pressure(e, rho, eps);
+            EXPECT_NEAR(internalEnergy(e, rho, p), eps, 4e-16 * eps);
+            EXPECT_NEAR(pressure(e, rho, internalEnergy(e, rho, p)), p, 4e-16 * p);
+            EXPECT_DOUBLE_EQ(temperature(e, rho, eps), eps / 2.5);
+        }
+}
+
+TEST(EosInverse, MieGruneisen)
+{
+    const EosParams e = copper();
+    for (double eta : {0.7, 0.9, 0.999, 1.0, 1.001, 1.1, 1.3, 1.8})
+        for (double eps : {0.0, 1.0, 1e3, 1e5, 1e6})
+        {
+            const double rho = eta * e.rho0;
+            const double p = pressure(e, rho, eps);
+            // round-off scale: the cold-curve term rho0 c0^2 f cancels in eps = (p - rho0 c0^2 f)/(rho0 Gamma0)
+            const double scale = std::fabs(eps) + std::fabs(p) / (e.rho0 * e.Gamma0);
+            EXPECT_NEAR(internalEnergy(e, rho, p), eps, 1e-15 * scale) << eta << " " << eps;
+            EXPECT_NEAR(pressure(e, rho, internalEnergy(e, rho, p)), p, 1e-15 * (std::fabs(p) + e.rho0 * e.c0 * e.c0));
+        }
+}
+
+TEST(EosInverse, NeoHookeanBarotropic)
+{
+    const EosParams e = rubber();
+    for (double eta : {0.3, 0.8, 0.99, 1.0, 1.01, 1.2, 2.0, 5.0})
+    {
+        const double rho = eta * e.rho0;
+        const double epsB = internalEnergy(e, rho, 0.0); // barotrope energy, p ignored
+        const double p = pressure(e, rho, epsB);
+        EXPECT_EQ(pressure(e, rho, 123.0), p); // eps ignored
+        EXPECT_EQ(internalEnergy(e, rho, p), epsB);
+        EXPECT_GE(epsB, 0.0);
+    }
+}
+
+//! Isentropic derivative by finite differences: integrate d eps = p / rho^2 d rho (RK4) to rho +- h.
+double isentropicC2(const EosParams& e, double rho, double eps)
+{
+    const double h = 1e-4 * rho;
+    auto f = [&](double r, double x) { return pressure(e, r, x) / (r * r); };
+    auto integrate = [&](double target)
+    {
+        double r = rho, x = eps;
+        const int n = 8;
+        const double dr = (target - rho) / n;
+        for (int i = 0; i < n; ++i)
+        {
+            const double k1 = f(r, x), k2 = f(r + 0.5 * dr, x + 0.5 * dr * k1), k3 = f(r + 0.5 * dr, x + 0.5 * dr * k2),
+                         k4 = f(r + dr, x + dr * k3);
+            x += dr / 6.0 * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+            r += dr;
+        }
+        return pressure(e, target, x);
+    };
+    return (integrate(rho + h) - integrate(rho - h)) / (2.0 * h);
+}
+
+TEST(EosSoundSpeed, MatchesIsentropicDerivative)
+{
+    struct Case
+    {
+        EosParams e;
+        std::vector<double> rho, eps;
+    };
+    const EosParams ig = idealGasEos(1.4, 2.5), mg = copper(), nh = rubber();
+    const Case cases[] = {
+        {ig, {1e-3, 0.5, 1.0, 6.0}, {1e-3, 1.0, 2.5e3}},
+        {mg, {0.8 * mg.rho0, 0.97 * mg.rho0, mg.rho0, 1.05 * mg.rho0, 1.4 * mg.rho0}, {0.0, 1e4, 1e6}},
+        {nh, {0.4 * nh.rho0, 0.9 * nh.rho0, nh.rho0, 1.1 * nh.rho0, 2.5 * nh.rho0}, {0.0}},
+    };
+    double worst = 0.0;
+    for (const Case& c : cases)
+        for (double rho : c.rho)
+            for (double eps : c.eps)
+            {
+                const double p = pressure(c.e, rho, eps);
+                const double c2 = soundSpeed2(c.e, rho, p);
+                const double fd = isentropicC2(c.e, rho, eps);
+                EXPECT_GT(c2, 0.0);
+                EXPECT_NEAR(c2, fd, 1e-6 * c2) << "type " << c.e.type << " rho " << rho << " eps " << eps;
+                worst = std::max(worst, std::fabs(c2 - fd) / c2);
+            }
+    std::printf("[ info     ] soundSpeed2 vs isentropic finite difference: max rel diff %.2e\n", worst);
+}
+
+TEST(EosMieGruneisen, LinearLimit)
+{
+    const EosParams e = copper();
+    EXPECT_EQ(pressure(e, e.rho0, 0.0), 0.0);
+    EXPECT_NEAR(soundSpeed2(e, e.rho0, 0.0), e.c0 * e.c0, 1e-15 * e.c0 * e.c0);
+    // small compression: p ~ rho0 c0^2 (eta - 1)
+    EXPECT_NEAR(pressure(e, (1.0 + 1e-7) * e.rho0, 0.0) / (e.rho0 * e.c0 * e.c0 * 1e-7), 1.0, 1e-6);
+    // Grueneisen term: dp/deps|_rho = rho0 Gamma0
+    EXPECT_NEAR(pressure(e, 1.2 * e.rho0, 10.0) - pressure(e, 1.2 * e.rho0, 0.0), 10.0 * e.rho0 * e.Gamma0,
+                1e-6 * 10.0 * e.rho0 * e.Gamma0);
+}
+
+TEST(EosNeoHookean, SignAndConsistency)
+{
+    const EosParams e = rubber();
+    const double G = e.rho0 * e.csh * e.csh;
+    EXPECT_EQ(pressure(e, e.rho0, 0.0), 0.0);
+    EXPECT_EQ(internalEnergy(e, e.rho0, 0.0), 0.0);
+    EXPECT_NEAR(soundSpeed2(e, e.rho0, 0.0), e.csh * e.csh, 1e-15 * e.csh * e.csh);
+    // p > 0 in compression, < 0 in tension, increasing in rho everywhere
+    double prev = -1e300;
+    for (int k = 0; k <= 400; ++k)
+    {
+        const double eta = 0.1 * std::pow(100.0, k / 400.0); // eta = rho/rho0 in [0.1, 10]
+        const double rho = eta * e.rho0;
+        const double p = pressure(e, rho, 0.0);
+        if (eta > 1.0)
+        {
+            EXPECT_GT(p, 0.0);
+        }
+        else if (eta < 1.0)
+        {
+            EXPECT_LT(p, 0.0);
+        }
+        EXPECT_GT(p, prev);
+        EXPECT_GT(soundSpeed2(e, rho, p), 0.0);
+        prev = p;
+        // thermodynamic consistency: d eps/d rho = p / rho^2 (central difference, O(h^2) ~ 1e-10 csh^2/rho0)
+        const double h = 1e-5 * rho;
+        const double dedr = (internalEnergy(e, rho + h, 0.0) - internalEnergy(e, rho - h, 0.0)) / (2.0 * h);
+        EXPECT_NEAR(dedr, p / (rho * rho), 1e-7 * std::fabs(p / (rho * rho)) + 1e-9 * e.csh * e.csh / e.rho0) << eta;
+    }
+    // small strain: p ~ G (eta - 1), i.e. small-strain bulk modulus G
+    EXPECT_NEAR(pressure(e, (1.0 + 1e-6) * e.rho0, 0.0) / (G * 1e-6), 1.0, 1e-5);
+}
+
+// ---- elastic stress, energy, signal speeds ----
+
+TEST(GprStress, IsotropicIsZero)
+{
+    for (double a : {0.3, 1.0, 1.7})
+    {
+        EXPECT_EQ(maxAbs(shearStress(2.0, 3.0, identity(a))), 0.0);
+        EXPECT_EQ(elasticEnergy(3.0, identity(a)), 0.0);
+    }
+}
+
+TEST(GprStress, SimpleShear)
+{
+    const double rho = 1.7, csh = 2.3, mu = rho * csh * csh;
+    for (double gam : {1e-6, 1e-3, 0.1, 0.5})
+    {
+        // F = I + gam e_x e_y, A = F^{-1} = I - gam e_x e_y, G = A^T A
+        const Sym3 G{1.0, 1.0 + gam * gam, 1.0, -gam, 0.0, 0.0};
+        const Sym3 s = shearStress(rho, csh, G);
+        EXPECT_NEAR(s.xy, mu * gam * (1.0 + 2.0 * gam * gam / 3.0), 1e-15 * mu); // linear limit: mu gamma
+        EXPECT_EQ(s.xz, 0.0);
+        EXPECT_EQ(s.yz, 0.0);
+        // full-matrix reference -rho csh^2 (G G - tr(G)/3 G)
+        const M3 g = full(G), gg = mul(g, g);
+        const double t3 = trace(G) / 3.0;
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j)
+                EXPECT_NEAR(s(i, j), -mu * (gg[i][j] - t3 * g[i][j]), 1e-14 * mu);
+        EXPECT_NEAR(elasticEnergy(csh, G), 0.25 * csh * csh * norm2(dev(G)), 1e-15);
+    }
+    // random G: the symmetric product equals the full product G dev(G) (they commute)
+    std::mt19937 rng(9);
+    for (int t = 0; t < 100; ++t)
+    {
+        const Sym3 G = randomSpd(rng, 0.4);
+        const Sym3 s = shearStress(rho, csh, G);
+        const M3 g = full(G), d = full(dev(G)), gd = mul(g, d);
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j)
+                EXPECT_NEAR(s(i, j), -mu * gd[i][j], 1e-13 * mu * maxAbs(G) * maxAbs(G));
+    }
+}
+
+TEST(GprStress, WaveSpeeds)
+{
+    EXPECT_DOUBLE_EQ(waveSpeed(4.0, 3.0, 0.0), std::sqrt(4.0 + 12.0));
+    EXPECT_DOUBLE_EQ(waveSpeed(4.0, 0.0, 5.0), 3.0);
+    EXPECT_DOUBLE_EQ(heatWaveSpeed2(2.0, 1.0, 0.5, 2.5), 4.0 * 0.5 / 2.5);
+    EXPECT_DOUBLE_EQ(tau1FromViscosity(1e-2, 1.0, 5.0), 6.0 * 1e-2 / 25.0);
+}
+
+// ---- strain relaxation ----
+
+//! Reference: RK4 of the matrix ODE dG/dt = -k G dev(G) with frozen k over unit time, n steps (kdt = k dt).
+Sym3 rk4Relax(Sym3 G, double kdt, int n)
+{
+    const double h = 1.0 / n;
+    auto f = [&](const Sym3& g) { return (-kdt) * symProduct(g, dev(g)); };
+    for (int i = 0; i < n; ++i)
+    {
+        const Sym3 k1 = f(G), k2 = f(G + (0.5 * h) * k1), k3 = f(G + (0.5 * h) * k2), k4 = f(G + h * k3);
+        G = G + (h / 6.0) * (k1 + 2.0 * k2 + 2.0 * k3 + k4);
+    }
+    return G;
+}
+
+std::vector<Sym3> relaxSamples()
+{
+    std::vector<Sym3> gs;
+    std::mt19937 rng(21);
+    for (int t = 0; t < 6; ++t)
+        gs.push_back(randomSpd(rng, 0.35));
+    gs.push_back(Sym3{1.0, 1.25, 1.0, -0.5, 0.0, 0.0});                // simple shear 0.5
+    gs.push_back(withEigen(randomRotation(rng), 0.02, 1.0, 30.0));     // strongly anisotropic
+    gs.push_back(0.3 * withEigen(randomRotation(rng), 0.5, 0.5, 2.0)); // double eigenvalue, det != 1
+    return gs;
+}
+
+TEST(RelaxStrain, DeterminantPreserved)
+{
+    // det of an SPD tensor stored in doubles is only defined to ~cond(G) * eps (rounding G's entries alone, or
+    // rebuilding it from its own eigenpairs, moves det that much), so the bound is 1e-13 up to cond = 100 and
+    // grows with cond beyond (the strongly anisotropic sample has cond = 1500).
+    double worst = 0.0;
+    for (const Sym3& G : relaxSamples())
+    {
+        const Eigen3 e = eigen(G);
+        const double tol = 1e-13 * std::max(1.0, e.value[2] / e.value[0] / 100.0);
+        for (double tau1 : {1e-14, 1e-6, 1e-2, 1.0, 1e14})
+            for (double dt : {1e-8, 1e-4, 1.0})
+            {
+                const Sym3 R = relaxStrain(G, dt, tau1);
+                const double rel = std::fabs(det(R) / det(G) - 1.0);
+                EXPECT_LE(rel, tol) << "tau1 " << tau1 << " dt " << dt;
+                worst = std::max(worst, rel);
+            }
+    }
+    std::printf("[ info     ] relaxStrain: max relative det change %.2e\n", worst);
+}
+
+TEST(RelaxStrain, HydrodynamicLimit)
+{
+    for (const Sym3& G : relaxSamples())
+        for (double dt : {1e-8, 1e-4, 1.0})
+        {
+            const Sym3 R = relaxStrain(G, dt, 1e-14);
+            const double g = std::cbrt(det(G));
+            EXPECT_LE(maxDiff(R, identity(g)), 1e-12 * g);
+        }
+    // tau1 = 0 (ideal fluid) is instantaneous; dt = 0 does nothing
+    const Sym3 G = relaxSamples()[0];
+    EXPECT_LE(maxDiff(relaxStrain(G, 1e-3, 0.0), identity(std::cbrt(det(G)))), 1e-15);
+    EXPECT_TRUE(bitwiseEqual(relaxStrain(G, 0.0, 0.0), G));
+}
+
+TEST(RelaxStrain, ElasticLimit)
+{
+    for (const Sym3& G : relaxSamples())
+    {
+        // +inf and k dt = 0: bit-for-bit
+        EXPECT_TRUE(bitwiseEqual(relaxStrain(G, 1.0, infinity()), G));
+        EXPECT_TRUE(bitwiseEqual(relaxStrainKdt(G, 0.0), G));
+        const double scale = maxAbs(G);
+        for (double dt : {1e-8, 1e-4})
+            EXPECT_LE(maxDiff(relaxStrain(G, dt, 1e14), G), 1e-15 * scale) << dt;
+        // dt = 1: the exact change -k dt G dev G is ~1e-14 |G| (not below 1e-15): compare with first order
+        const double kdt = strainRelaxationRate(G, 1e14) * 1.0;
+        const Sym3 first = G - kdt * symProduct(G, dev(G));
+        EXPECT_LE(maxDiff(relaxStrain(G, 1.0, 1e14), first), 1e-15 * scale);
+    }
+}
+
+TEST(RelaxStrain, EigenvectorsPreservedAndMonotoneDecay)
+{
+    for (const Sym3& G : relaxSamples())
+    {
+        const Eigen3 e = eigen(G);
+        double prev = std::sqrt(norm2(dev(G)));
+        for (int k = -6; k <= 3; ++k)
+        {
+            const double dt = std::pow(10.0, k);
+            const Sym3 R = relaxStrain(G, dt, 1.0);
+            // V^T R V is diagonal
+            double off = 0.0;
+            for (int a = 0; a < 3; ++a)
+                for (int b = 0; b < 3; ++b)
+                {
+                    if (a == b)
+                        continue;
+                    double s = 0.0;
+                    for (int i = 0; i < 3; ++i)
+                        for (int j = 0; j < 3; ++j)
+                            s += e.vector[i][a] * R(i, j) * e.vector[j][b];
+                    off = std::max(off, std::fabs(s));
+                }
+            EXPECT_LE(off, 1e-14 * maxAbs(G));
+            const double nd = std::sqrt(norm2(dev(R)));
+            EXPECT_LE(nd, prev * (1.0 + 1e-14)) << dt;
+            prev = nd;
+        }
+    }
+}
+
+TEST(RelaxStrain, MatchesRk4Reference)
+{
+    double worst = 0.0;
+    for (const Sym3& G : relaxSamples())
+        for (double kgdt : {0.1, 1.0, 5.0, 20.0}) // 20: past the closed-form tail switch for most samples
+        {
+            // k g dt (g = det^{1/3}) is the dimensionless relaxation time of the deviations near equilibrium
+            const double g = std::cbrt(det(G));
+            const double kdt = kgdt / g;
+            const Eigen3 e = eigen(G);
+            const int n = int(std::ceil(kdt * e.value[2] / 1e-3)) + 100; // h k lambda_max <= 1e-3
+            const Sym3 ref = rk4Relax(G, kdt, n);
+            const Sym3 R = relaxStrainKdt(G, kdt);
+            const double err = maxDiff(R, ref) / maxAbs(G);
+            EXPECT_LE(err, 1e-10) << "k g dt " << kgdt;
+            worst = std::max(worst, err);
+        }
+    std::printf("[ info     ] relaxStrain vs RK4 (k g dt = 0.1, 1, 5, 20): max rel diff %.2e\n", worst);
+}
+
+TEST(RelaxStrain, SemigroupProperty)
+{
+    // exactness: relaxing by a then by a equals relaxing by 2a
+    double worst = 0.0;
+    for (const Sym3& G : relaxSamples())
+        for (double a : {1e-3, 0.2, 1.5, 20.0})
+        {
+            const Sym3 one = relaxStrainKdt(G, 2.0 * a);
+            const Sym3 two = relaxStrainKdt(relaxStrainKdt(G, a), a);
+            const double err = maxDiff(one, two) / maxAbs(G);
+            EXPECT_LE(err, 1e-12) << a;
+            worst = std::max(worst, err);
+        }
+    std::printf("[ info     ] relaxStrain semigroup defect: %.2e\n", worst);
+}
+
+// ---- plasticity ----
+
+TEST(GprPlastic, VonMises)
+{
+    EXPECT_NEAR(vonMises(Sym3{-3.0, 0.0, 0.0, 0.0, 0.0, 0.0}), 3.0, 1e-15);
+    EXPECT_NEAR(vonMises(Sym3{0.0, 0.0, 0.0, 2.0, 0.0, 0.0}), 2.0 * std::sqrt(3.0), 1e-14);
+    EXPECT_EQ(vonMises(identity(-5.0)), 0.0);
+    const Sym3 s{1.0, -2.0, 0.5, 0.3, -0.2, 0.7};
+    EXPECT_NEAR(vonMises(s + identity(100.0)), vonMises(s), 1e-12); // pressure does not change it
+}
+
+TEST(GprPlastic, PowerLawTau1)
+{
+    const double tau10 = 1.0, sY = 9e7;
+    EXPECT_DOUBLE_EQ(plasticTau1(tau10, sY, 100.0, sY), 1.0);
+    EXPECT_DOUBLE_EQ(plasticTau1(2.0, sY, 2.0, 2.0 * sY), 0.5);
+    EXPECT_DOUBLE_EQ(plasticTau1(1.0, sY, 3.0, 0.5 * sY), 8.0);
+    // guard: no deviatoric stress -> elastic; a huge ratio overflows to +inf, not NaN
+    EXPECT_TRUE(std::isinf(plasticTau1(tau10, sY, 100.0, 0.0)));
+    EXPECT_TRUE(std::isinf(plasticTau1(tau10, sY, 100.0, -1.0)));
+    EXPECT_TRUE(std::isinf(plasticTau1(tau10, sY, 100.0, 1e-300)));
+    EXPECT_EQ(plasticTau1(tau10, sY, 100.0, 1e300), 0.0);
+    // an infinite tau1 leaves G bit-for-bit
+    const Sym3 G{1.0, 1.25, 1.0, -0.5, 0.0, 0.0};
+    EXPECT_TRUE(bitwiseEqual(relaxStrain(G, 1e-3, plasticTau1(tau10, sY, 100.0, 0.0)), G));
+}
+
+// ---- heat ----
+
+TEST(GprHeat, RelaxationFactorLimits)
+{
+    const double dt = 1e-3, rho = 1.2, rho0 = 1.0, th = 0.7, th0 = 0.5;
+    EXPECT_EQ(relaxHeatFactor(dt, 0.0, rho, rho0, th, th0), 0.0);
+    EXPECT_LT(relaxHeatFactor(dt, 1e-14, rho, rho0, th, th0), 1e-10);
+    EXPECT_EQ(relaxHeatFactor(dt, infinity(), rho, rho0, th, th0), 1.0);
+    EXPECT_NEAR(relaxHeatFactor(dt, 1e14, rho, rho0, th, th0), 1.0, 1e-16);
+    EXPECT_EQ(relaxHeatFactor(0.0, 0.0, rho, rho0, th, th0), 1.0);
+    const double x = dt * rho0 * th / (0.01 * rho * th0);
+    EXPECT_DOUBLE_EQ(relaxHeatFactor(dt, 0.01, rho, rho0, th, th0), 1.0 / (1.0 + x));
+    // kappa <-> tau2
+    const double alpha = 2.0, kappa = 1e-2;
+    const double tau2 = tau2FromKappa(kappa, alpha, th0, rho0);
+    EXPECT_NEAR(kappaFromTau2(tau2, alpha, th0, rho0), kappa, 1e-18);
+    EXPECT_DOUBLE_EQ(kappaFromTau2(0.3, alpha, th0, rho0), 0.3 * alpha * alpha * th0 / rho0);
+}
+
+// ---- device-callability ----
+
+//! Pseudo-random SPD tensor of index i (device-side, no RNG state).
+KOKKOS_INLINE_FUNCTION Sym3 indexedSpd(int i)
+{
+    const double t = 0.37 * i;
+    const double a = 0.3 * Kokkos::Experimental::sin(t), b = 0.25 * Kokkos::Experimental::cos(1.3 * t),
+                 c = 0.2 * Kokkos::Experimental::sin(2.1 * t + 0.4);
+    return Sym3{1.0 + a, 1.1 - b, 0.9 + c, 0.5 * b, -0.4 * c, 0.3 * a};
+}
+
+KOKKOS_INLINE_FUNCTION double indexedTau1(int i)
+{
+    return 1e-3 * (1 + i % 7);
+}
+
+struct DeviceResults
+{
+    double eigenErr, detErr, eosErr;
+};
+
+//! Kernels through parallel_for / parallel_reduce (a free function: CUDA extended lambdas cannot live in TEST
+//! bodies).
+DeviceResults runOnDevice(int n, const Kokkos::View<double* [6], unilag::MemSpace>& out)
+{
+    using unilag::range;
+    Kokkos::parallel_for(
+        "gpr_test::relax", range(n), KOKKOS_LAMBDA(const int i) {
+            const Sym3 R = relaxStrain(indexedSpd(i), 1e-3, indexedTau1(i));
+            out(i, 0) = R.xx;
+            out(i, 1) = R.yy;
+            out(i, 2) = R.zz;
+            out(i, 3) = R.xy;
+            out(i, 4) = R.xz;
+            out(i, 5) = R.yz;
+        });
+    DeviceResults r{0.0, 0.0, 0.0};
+    Kokkos::parallel_reduce(
+        "gpr_test::eigen", range(n),
+        KOKKOS_LAMBDA(const int i, double& err) {
+            const Sym3 G = indexedSpd(i);
+            const Sym3 d = fromEigen(eigen(G)) - G;
+            err = Kokkos::Experimental::fmax(err, Kokkos::Experimental::sqrt(norm2(d)));
+        },
+        Kokkos::Max<double>(r.eigenErr));
+    Kokkos::parallel_reduce(
+        "gpr_test::relax_det", range(n),
+        KOKKOS_LAMBDA(const int i, double& err) {
+            const Sym3 G = indexedSpd(i);
+            const Sym3 R = relaxStrain(G, 1e-3, indexedTau1(i));
+            err = Kokkos::Experimental::fmax(err, Kokkos::Experimental::fabs(det(R) / det(G) - 1.0));
+        },
+        Kokkos::Max<double>(r.detErr));
+    Kokkos::parallel_reduce(
+        "gpr_test::eos", range(n),
+        KOKKOS_LAMBDA(const int i, double& err) {
+            const EosParams eos = mieGruneisenEos(8930.0, 3939.0, 2.0, 1.5, 390.0);
+            const double rho = 8930.0 * (0.9 + 0.001 * (i % 300)), eps = 1e3 * (i % 11);
+            const double p = pressure(eos, rho, eps);
+            const double scale = eps + Kokkos::Experimental::fabs(p) / (8930.0 * 2.0);
+            err =
+                Kokkos::Experimental::fmax(err, Kokkos::Experimental::fabs(internalEnergy(eos, rho, p) - eps) / scale);
+        },
+        Kokkos::Max<double>(r.eosErr));
+    return r;
+}
+
+TEST(GprDevice, KernelsRunInParallel)
+{
+    const int n = 4096;
+    Kokkos::View<double* [6], unilag::MemSpace> out("relaxed", n);
+    const DeviceResults r = runOnDevice(n, out);
+    EXPECT_LE(r.eigenErr, 1e-14);
+    EXPECT_LE(r.detErr, 1e-13);
+    EXPECT_LE(r.eosErr, 1e-15);
+    auto h = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), out);
+    for (int i = 0; i < n; i += 97)
+    {
+        const Sym3 R = relaxStrain(indexedSpd(i), 1e-3, indexedTau1(i));
+        const double v[6] = {R.xx, R.yy, R.zz, R.xy, R.xz, R.yz};
+        for (int c = 0; c < 6; ++c)
+            EXPECT_EQ(h(i, c), v[c]); // same code on the host and in the kernel
+    }
+}
+
+} // namespace
