@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <map>
 #include <unordered_map>
 
@@ -218,6 +219,78 @@ void extract(const std::string& source, GlobalMesh& m)
     }
 }
 
+//! Interleave the low 21 bits of three integers (Morton / Z-order key).
+std::uint64_t morton(std::uint64_t x, std::uint64_t y, std::uint64_t z)
+{
+    auto spread = [](std::uint64_t v) {
+        v &= 0x1fffff;
+        v = (v | v << 32) & 0x1f00000000ffffULL;
+        v = (v | v << 16) & 0x1f0000ff0000ffULL;
+        v = (v | v << 8) & 0x100f00f00f00f00fULL;
+        v = (v | v << 4) & 0x10c30c30c30c30c3ULL;
+        v = (v | v << 2) & 0x1249249249249249ULL;
+        return v;
+    };
+    return spread(x) | spread(y) << 1 | spread(z) << 2;
+}
+
+/*! Renumber cells along a Morton curve of their centroids, and nodes in the order cells first touch them, so
+ *  that global ids (and hence the local numbering, sorted by global id) are spatially coherent: the gathers
+ *  of the kernels then walk memory nearly in order. gmsh's own numbering is not coherent. */
+void renumber(GlobalMesh& m)
+{
+    const int nv = m.nv();
+    const std::size_t nc = m.nCells();
+    double lo[3] = {1e300, 1e300, 1e300}, hi[3] = {-1e300, -1e300, -1e300};
+    for (std::size_t n = 0; n < m.nNodes(); ++n)
+        for (int d = 0; d < 3; ++d)
+        {
+            lo[d] = std::min(lo[d], m.coords[3 * n + d]);
+            hi[d] = std::max(hi[d], m.coords[3 * n + d]);
+        }
+    std::vector<std::pair<std::uint64_t, std::size_t>> key(nc);
+    for (std::size_t c = 0; c < nc; ++c)
+    {
+        std::uint64_t q[3] = {0, 0, 0};
+        for (int d = 0; d < 3; ++d)
+        {
+            double x = 0.0;
+            for (int k = 0; k < nv; ++k)
+                x += m.coords[3 * m.cells[nv * c + k] + d] / nv;
+            const double w = hi[d] - lo[d];
+            q[d] = w > 0.0 ? std::uint64_t((x - lo[d]) / w * 2097151.0) : 0;
+        }
+        key[c] = {morton(q[0], q[1], q[2]), c};
+    }
+    std::sort(key.begin(), key.end());
+    GlobalMesh r;
+    r.dim = m.dim;
+    r.regionNames = m.regionNames;
+    r.boundaryNames = m.boundaryNames;
+    std::vector<int> newNode(m.nNodes(), -1);
+    int next = 0;
+    for (const auto& [k, c] : key)
+    {
+        for (int j = 0; j < nv; ++j)
+        {
+            int& id = newNode[m.cells[nv * c + j]];
+            if (id < 0)
+                id = next++;
+            r.cells.push_back(id);
+            r.cellFaceGroup.push_back(m.cellFaceGroup[nv * c + j]);
+        }
+        r.cellTag.push_back(m.cellTag[c]);
+        r.cellRegion.push_back(m.cellRegion[c]);
+    }
+    // nodes that belong to no cell (e.g. geometry points) are dropped
+    r.coords.resize(3 * std::size_t(next));
+    for (std::size_t n = 0; n < m.nNodes(); ++n)
+        if (newNode[n] >= 0)
+            for (int d = 0; d < 3; ++d)
+                r.coords[3 * newNode[n] + d] = m.coords[3 * n + d];
+    m = std::move(r);
+}
+
 } // namespace
 
 GlobalMesh loadMesh(const Scene& scene)
@@ -248,6 +321,7 @@ GlobalMesh loadMesh(const Scene& scene)
             throw InputError(source + ": " + gmshError());
         }
         extract(source, m);
+        renumber(m);
     }
     catch (...)
     {
