@@ -7,7 +7,8 @@
  *   - nodal solve     M_r v_r = sum_i (M_ir v_i - T_i c_ri)                  (2.2)
  *   - subcell force   f_ri = T_i c_ri + M_ir (v_r - v_i)
  *   - cell update     v_i += dt/m_i sum_r f_ri,  E_i += dt/m_i sum_r f_ri . v_r  (2b, 2c)
- *   - GCL             omega_i += dt/m_i sum_r v_r . (c^n + 4 c^{n+1/2} + c^{n+1})/6  (2a, Simpson: exact)
+ *   - GCL             omega_i += dt/m_i sum_r v_r . (c^n + 4 c^{n+1/2} + c^{n+1})/6  (2a, Simpson: exact);
+ *                     checked against |T_i^{n+1}| / m_i every step, which is what is stored
  *  Every node sum is a gather over the node -> corner CSR map (no atomics): results are bitwise independent of
  *  the thread count, and, since corners are ordered by global cell id, of the MPI partition.
  */
@@ -62,14 +63,15 @@ enum BcType : int
 {
     BcFree = 0,     //!< zero traction
     BcSlipWall = 1, //!< v . n = 0 (also symmetry planes)
-    BcVelocity = 2  //!< imposed velocity vector (piston, clamped)
+    BcVelocity = 2, //!< imposed velocity vector (piston, clamped)
+    BcPressure = 3  //!< imposed pressure: normal traction -p n (free surface when p = 0)
 };
 
 //! Boundary conditions by boundary group id (the group of a face is MeshView::cellFaceGroup).
 struct BoundaryView
 {
     View<const int*> type;                        //!< group -> BcType
-    Kokkos::View<const double* [3], MemSpace> value; //!< group -> imposed velocity
+    Kokkos::View<const double* [3], MemSpace> value; //!< group -> imposed velocity, or pressure in component 0
 };
 
 //! Derived cell quantities (pressure, sound speed, impedance z = rho c) for cells [0, nCells).
@@ -122,6 +124,7 @@ void nodalSolve(const MeshView<D>& mesh, const BoundaryView& bc, const ConstFiel
     {
         Mat<D> M = Mat<D>::zero();
         Vec<D> b = Vec<D>::zero();
+        Vec<D> bext = Vec<D>::zero(); // imposed tractions: sum over boundary faces at r of (s_f / D) t_ext
         // Slip-wall normals, clustered by direction: faces whose normals differ by less than ~45 degrees (a
         // curved or faceted wall) share one constraint; walls meeting at a corner or an edge give one each,
         // whichever boundary groups they belong to.
@@ -155,6 +158,11 @@ void nodalSolve(const MeshView<D>& mesh, const BoundaryView& bc, const ConstFiel
                 const int t = bc.type(g);
                 if (t == BcVelocity && imposed < 0)
                     imposed = g;
+                else if (t == BcPressure)
+                {
+                    // t_ext = -p n on face j, whose outward area vector is -D c_j: (s_f / D) t_ext = p c_j
+                    bext = bext + bc.value(g, 0) * cornerVec<D>(corner, i, j);
+                }
                 else if (t == BcSlipWall)
                 {
                     // outward area vector of face j is -D c_j
@@ -189,7 +197,7 @@ void nodalSolve(const MeshView<D>& mesh, const BoundaryView& bc, const ConstFiel
         }
         else if (nSlip == 0)
         {
-            v = solve(M, b);
+            v = solve(M, b + bext);
         }
         else
         {
@@ -231,13 +239,13 @@ void nodalSolve(const MeshView<D>& mesh, const BoundaryView& bc, const ConstFiel
                     }
                 for (int s = 0; s < nq; ++s)
                     A.addOuter(1.0, Q[s]);
-                v = solve(A, P * b);
+                v = solve(A, P * (b + bext));
                 // remove the round-off normal component so that walls do no work
                 for (int s = 0; s < nq; ++s)
                     v = v - dot(v, Q[s]) * Q[s];
             }
         }
-        const Vec<D> F = M * v - b;  // sum_i f_ri
+        const Vec<D> F = M * v - b; // sum_i f_ri: the force of the boundary (walls, pistons, tractions) on the fluid
         for (int d = 0; d < D; ++d)
         {
             vnode(r, d) = v[d];
@@ -347,7 +355,11 @@ UpdateCheck updateCells(const MeshView<D>& mesh, const ConstField& state, const 
             kin += 0.5 * v * v;
         }
         const double E = state(i, S::energy) + dtm * power;
-        const double omega = state(i, S::omega) + dtm * flux / 6.0;
+        // (2a) with Simpson's rule is exact for linear trajectories: the GCL volume must equal the geometric
+        // one up to this step's round-off. Store the geometric one (as the paper's Picard loop does), so that
+        // round-off does not accumulate over the steps, and report the one-step defect.
+        const double omegaGcl = state(i, S::omega) + dtm * flux / 6.0;
+        const double omega = sNew.volume / mass(i);
         stateNew(i, S::energy) = E;
         stateNew(i, S::omega) = omega;
 
@@ -357,7 +369,7 @@ UpdateCheck updateCells(const MeshView<D>& mesh, const ConstField& state, const 
             eps = -Kokkos::reduction_identity<double>::min(); // NaN: report as the worst possible
         ext[0] = Kokkos::Experimental::fmin(ext[0], ratio);
         ext[1] = Kokkos::Experimental::fmin(ext[1], eps);
-        ext[2] = Kokkos::Experimental::fmin(ext[2], -Kokkos::Experimental::fabs(mass(i) * omega - sNew.volume) /
+        ext[2] = Kokkos::Experimental::fmin(ext[2], -Kokkos::Experimental::fabs(mass(i) * omegaGcl - sNew.volume) /
                                                          sNew.volume);
         if (ratio <= 0.0 || eps <= 0.0)
             ext[3] = Kokkos::Experimental::fmin(ext[3], double(i));

@@ -496,13 +496,15 @@ Scene readScene(const std::string& file, const std::vector<std::string>& overrid
         {
             Node b = bcs.sub(name);
             BoundarySpec spec;
-            spec.type = b.choice("type", "", {"free", "slip_wall", "symmetry", "velocity"}, true);
+            spec.type = b.choice("type", "", {"free", "slip_wall", "symmetry", "velocity", "pressure"}, true);
             if (spec.type == "velocity")
             {
                 auto v = b.vector("velocity", true);
                 for (std::size_t d = 0; d < v.size(); ++d)
                     spec.velocity[d] = v[d];
             }
+            if (spec.type == "pressure")
+                spec.pressure = b.expression("pressure", true);
             b.rejectUnknown();
             s.boundaries[name] = spec;
         }
@@ -551,6 +553,14 @@ Scene readScene(const std::string& file, const std::vector<std::string>& overrid
             x.fail("table", "file not found: " + s.exactTable);
         s.exactShockRadius = x.positive("shock_radius", 1.0, sedov);
         s.exactTime = x.positive("time", 1.0);
+        if (x.has("boundary_radius"))
+        {
+            Node radii = x.sub("boundary_radius");
+            for (const auto& group : radii.keys())
+                s.boundaryRadius[group] = radii.positive(group, 0.0, true);
+            radii.rejectUnknown();
+        }
+        s.radiusTolerance = x.nonNegative("radius_tolerance", 0.0);
         s.maxL1Density = x.nonNegative("max_l1_density", 0.0);
         s.shockRadiusTolerance = x.nonNegative("shock_radius_tolerance", 0.0);
         x.rejectUnknown();

@@ -52,8 +52,9 @@ struct RegionSpec
 
 struct BoundarySpec
 {
-    std::string type; //!< free, slip_wall, symmetry, velocity
+    std::string type; //!< free, slip_wall, symmetry, velocity, pressure
     std::array<double, 3> velocity{0.0, 0.0, 0.0};
+    Expr pressure; //!< imposed pressure (normal traction -p n): a constant or an expression of t
 };
 
 struct Scene
@@ -93,6 +94,8 @@ struct Scene
     double exactTime = 1.0;             //!< time of the tabulated profile (self-similar scaling to other times)
     double maxL1Density = 0.0;          //!< --check bound, 0 = none
     double shockRadiusTolerance = 0.0;  //!< --check bound (relative), 0 = none
+    std::map<std::string, double> boundaryRadius; //!< exact mean distance from the origin of a boundary group
+    double radiusTolerance = 0.0;                 //!< --check bound on it (relative), 0 = none
 
     Teuchos::ParameterList resolved; //!< the scene with defaults filled in, written beside the output
 };

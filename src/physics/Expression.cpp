@@ -11,7 +11,7 @@ namespace unilag
 struct Expression::Impl
 {
     mu::Parser parser;
-    double x = 0.0, y = 0.0, z = 0.0, r = 0.0;
+    double x = 0.0, y = 0.0, z = 0.0, r = 0.0, t = 0.0;
 };
 
 Expression::Expression(const std::string& text) : impl_(std::make_unique<Impl>())
@@ -22,6 +22,7 @@ Expression::Expression(const std::string& text) : impl_(std::make_unique<Impl>()
         impl_->parser.DefineVar("y", &impl_->y);
         impl_->parser.DefineVar("z", &impl_->z);
         impl_->parser.DefineVar("r", &impl_->r);
+        impl_->parser.DefineVar("t", &impl_->t);
         impl_->parser.SetExpr(text);
         impl_->parser.Eval(); // compile now, so a syntax error surfaces while reading the scene
     }
@@ -33,8 +34,9 @@ Expression::Expression(const std::string& text) : impl_(std::make_unique<Impl>()
 
 Expression::~Expression() = default;
 
-double Expression::operator()(double x, double y, double z)
+double Expression::operator()(double x, double y, double z, double t)
 {
+    impl_->t = t;
     impl_->x = x;
     impl_->y = y;
     impl_->z = z;

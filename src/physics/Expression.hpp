@@ -1,5 +1,5 @@
 /*! \file Expression.hpp
- *  \brief Scalar expressions of position (x, y, z, r = |x|) for initial conditions, evaluated with muparser.
+ *  \brief Scalar expressions of position (x, y, z, r = |x|) and time t, evaluated with muparser.
  */
 #pragma once
 
@@ -17,7 +17,7 @@ class Expression
     ~Expression();
     Expression(const Expression&) = delete;
     Expression& operator=(const Expression&) = delete;
-    double operator()(double x, double y, double z);
+    double operator()(double x, double y, double z, double t = 0.0);
 
   private:
     struct Impl;

@@ -140,9 +140,19 @@ class HydroSolver
                     return scene_.file + ": key 'boundaries': the mesh has a boundary group '" + dm.boundaryNames[g] +
                            "' with no condition";
                 const auto& t = it->second.type;
-                th(g) = t == "velocity" ? BcVelocity : (t == "free" ? BcFree : BcSlipWall);
+                th(g) = t == "velocity" ? BcVelocity
+                        : t == "free"   ? BcFree
+                        : t == "pressure" ? BcPressure
+                                          : BcSlipWall;
                 for (int d = 0; d < 3; ++d)
                     vh(g, d) = it->second.velocity[d];
+                if (t == "pressure")
+                {
+                    const Expr& e = it->second.pressure;
+                    vh(g, 0) = e.value;
+                    if (!e.isConstant())
+                        pressureLaws_.emplace_back(g, std::make_unique<Expression>(e.text));
+                }
             }
             for (const auto& [name, spec] : scene_.boundaries)
                 if (std::find(dm.boundaryNames.begin(), dm.boundaryNames.end(), name) == dm.boundaryNames.end())
@@ -151,6 +161,8 @@ class HydroSolver
             Kokkos::deep_copy(value, vh);
             bc_.type = type;
             bc_.value = value;
+            bcValue_ = value;
+            bcValueHost_ = vh;
         }
         // Materials, indexed in the order of the scene's map.
         std::vector<std::string> matNames;
@@ -359,6 +371,12 @@ class HydroSolver
         while (t < tEnd * (1.0 - 1e-14) && step < scene_.maxSteps)
         {
             // 1. Nodal solve on the configuration at t^n (geometry and EOS are current for all local cells).
+            if (!pressureLaws_.empty())
+            {
+                for (auto& [g, law] : pressureLaws_)
+                    bcValueHost_(g, 0) = (*law)(0.0, 0.0, 0.0, t);
+                Kokkos::deep_copy(bcValue_, bcValueHost_);
+            }
             {
                 ScopedTimer timer(timers_.nodal);
                 auto s = state_->getLocalViewDevice(Tpetra::Access::ReadOnly);
@@ -512,6 +530,8 @@ class HydroSolver
             exactShock *= scale;
         }
 
+        const std::vector<double> radii = boundaryRadii();
+
         const GO cells = dm.nGlobalCells, nodes = dm.nGlobalNodes;
         const double cellSteps = double(cells) * double(step) / std::max(wall, 1e-300);
         std::ostringstream js;
@@ -530,6 +550,10 @@ class HydroSolver
         if (l1 >= 0.0)
             js << "  \"l1_density_error\": " << jsonNumber(l1) << ",\n  \"shock_radius\": " << jsonNumber(shock)
                << ",\n  \"exact_shock_radius\": " << jsonNumber(exactShock) << ",\n";
+        js << "  \"boundary_mean_radius\": {";
+        for (std::size_t g = 0; g < radii.size(); ++g)
+            js << (g ? ", " : "") << "\"" << dm.boundaryNames[g] << "\": " << jsonNumber(radii[g]);
+        js << "},\n";
         js << "  \"time_share\": {\"geometry\": " << jsonNumber(timers_.geometry / wall)
            << ", \"nodal_solve\": " << jsonNumber(timers_.nodal / wall)
            << ", \"cell_update\": " << jsonNumber(timers_.update / wall)
@@ -560,7 +584,7 @@ class HydroSolver
             return ExitUnstable;
         }
         if (options_.check)
-            return selfCheck(massChange, momentumChange, energyChange, maxGcl, l1, shock, exactShock);
+            return selfCheck(massChange, momentumChange, energyChange, maxGcl, l1, shock, exactShock, radii);
         return ExitOk;
     }
 
@@ -629,7 +653,7 @@ class HydroSolver
     }
 
     int selfCheck(double massChange, double momentumChange, double energyChange, double gcl, double l1, double shock,
-                  double exactShock)
+                  double exactShock, const std::vector<double>& radii)
     {
         std::vector<std::string> fails;
         auto bound = [&](const char* what, double value, double limit) {
@@ -650,6 +674,15 @@ class HydroSolver
         if (scene_.shockRadiusTolerance > 0.0)
             bound("relative shock radius error", std::abs(shock - exactShock) / exactShock,
                   scene_.shockRadiusTolerance);
+        if (scene_.radiusTolerance > 0.0)
+            for (const auto& [group, exact] : scene_.boundaryRadius)
+            {
+                const auto& names = mesh_->boundaryNames;
+                const auto it = std::find(names.begin(), names.end(), group);
+                const double r = it == names.end() ? -1.0 : radii[it - names.begin()];
+                bound(("relative error of the mean radius of '" + group + "'").c_str(), std::abs(r - exact) / exact,
+                      scene_.radiusTolerance);
+            }
         if (rank_ == 0)
         {
             for (const auto& f : fails)
@@ -658,6 +691,44 @@ class HydroSolver
                 std::printf("unilag: check passed\n");
         }
         return fails.empty() ? ExitOk : ExitCheck;
+    }
+
+    //! Mean distance from the origin of the nodes of each boundary group (shell radii: Kidder, beryllium shell).
+    std::vector<double> boundaryRadii()
+    {
+        const auto& dm = *mesh_;
+        const int ng = int(dm.boundaryNames.size()), nv = D + 1;
+        std::vector<std::vector<char>> on(ng, std::vector<char>(dm.nOwnedNodes, 0));
+        for (LO i = 0; i < dm.nCells; ++i)
+            for (int j = 0; j < nv; ++j)
+            {
+                const int g = dm.cellFaceGroupHost[nv * i + j];
+                if (g < 0)
+                    continue;
+                for (int k = 0; k < nv; ++k)
+                {
+                    const LO r = dm.cellNodesHost[nv * i + k];
+                    if (k != j && r < dm.nOwnedNodes)
+                        on[g][r] = 1;
+                }
+            }
+        auto xh = x_->getLocalViewHost(Tpetra::Access::ReadOnly);
+        std::vector<double> acc(2 * std::size_t(ng), 0.0);
+        for (int g = 0; g < ng; ++g)
+            for (LO r = 0; r < dm.nOwnedNodes; ++r)
+                if (on[g][r])
+                {
+                    double r2 = 0.0;
+                    for (int d = 0; d < D; ++d)
+                        r2 += xh(r, d) * xh(r, d);
+                    acc[2 * g] += std::sqrt(r2);
+                    acc[2 * g + 1] += 1.0;
+                }
+        MPI_Allreduce(MPI_IN_PLACE, acc.data(), 2 * ng, MPI_DOUBLE, MPI_SUM, comm_);
+        std::vector<double> radii(ng);
+        for (int g = 0; g < ng; ++g)
+            radii[g] = acc[2 * g + 1] > 0 ? acc[2 * g] / acc[2 * g + 1] : 0.0;
+        return radii;
     }
 
     //! Volume-weighted mean |rho - rho_exact(|centroid|)| over the domain.
@@ -793,6 +864,9 @@ class HydroSolver
     View<int*> cellMaterial_;
     View<const Material*> materials_;
     BoundaryView bc_;
+    Kokkos::View<double* [3], MemSpace> bcValue_;                           //!< bc_.value, writable
+    Kokkos::View<double* [3], MemSpace>::HostMirror bcValueHost_;
+    std::vector<std::pair<int, std::unique_ptr<Expression>>> pressureLaws_; //!< time-dependent imposed pressures
     Timers timers_;
 };
 
