@@ -1,0 +1,338 @@
+/*! \file bench_kernels.cpp
+ *  \brief Google Benchmark microbenchmarks of the hot kernels of one Lagrangian step.
+ *
+ *  Build with `cmake --preset release -DUNILAG_ENABLE_BENCHMARKS=ON && cmake --build build/release --target
+ *  unilag_bench`, then run e.g. `OMP_NUM_THREADS=2 OMP_PROC_BIND=spread ./build/release/apps/unilag_bench
+ *  --benchmark_min_time=0.2` (any Google Benchmark option works: `--benchmark_filter=step/2D` selects, and
+ *  only the meshes of the selected benchmarks are generated, once each). Meshes come from
+ *  inputs/geometry/quadrant2d.geo (triangles, 4k to 250k cells) and octant3d.geo (tetrahedra, 8k and 64k);
+ *  set UNILAG_INPUTS to the inputs folder if the source tree has moved. The state is a smooth non-trivial field
+ *  with every boundary a slip wall, on one MPI rank. Benchmarks: `geometry/<D>D/<size>` is computeGeometry,
+ *  `nodal_solve/...` nodalSolve (its gather over the node->corner CSR included), `cell_update/...` moveNodes +
+ *  updateCells with a CFL time step, `step/...` a whole step (geometry, EOS, nodal solve, move, update; the step
+ *  is recomputed from the same state each iteration, so every iteration does identical work). Times are
+ *  manual times between two Kokkos::fence() calls. Counters: `cells/s` (and `nodes/s` for the nodal solver) is
+ *  owned cells (nodes) processed per second of kernel time, i.e. the cell-steps/s a run would reach if that
+ *  kernel were the whole step; `bytes_per_second` (geometry only) is a lower bound of the memory traffic (each
+ *  array read or written once); `cells` and `nodes` are the mesh size; the step benchmark also reports the share
+ *  of its time spent in `geometry`, `eos`, `nodal`, `update` (fractions summing to about 1).
+ */
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <cstdlib>
+#include <filesystem>
+#include <map>
+#include <memory>
+#include <stdexcept>
+#include <string>
+#include <utility>
+
+#include <benchmark/benchmark.h>
+
+#include <Kokkos_Core.hpp>
+#include <Tpetra_Core.hpp>
+
+#include "io/Scene.hpp"
+#include "mesh/DistributedMesh.hpp"
+#include "mesh/GlobalMesh.hpp"
+#include "unilag/Hydro.hpp"
+
+namespace
+{
+
+namespace fs = std::filesystem;
+using Clock = std::chrono::steady_clock;
+using namespace unilag;
+
+fs::path inputsDir()
+{
+    if (const char* env = std::getenv("UNILAG_INPUTS"); env && *env)
+        return fs::path(env);
+    return fs::path(__FILE__).parent_path().parent_path() / "inputs";
+}
+
+//! One mesh with a representative state: everything a step needs, as plain Kokkos Views on one rank.
+template <int D>
+struct Fixture
+{
+    using S = HydroState<D>;
+
+    std::shared_ptr<DistributedMesh> dm;
+    MeshView<D> m;
+    Field state, stateNew, x, xNew, vnode, fnode, aux;
+    CellGeometry geom;
+    View<double*> mass;
+    View<int*> cellMaterial;
+    View<Material*> materials;
+    BoundaryView bc;
+    double dt = 0.0;
+
+    Fixture(const fs::path& geo, double h)
+    {
+        Scene scene;
+        scene.file = geo.string();
+        scene.directory = geo.parent_path().string();
+        scene.name = "bench";
+        scene.geometry = geo.string();
+        scene.meshSize = h;
+        {
+            GlobalMesh global = loadMesh(scene);
+            if (global.dim != D)
+                throw std::runtime_error(geo.string() + ": expected a " + std::to_string(D) + "D mesh");
+            dm = DistributedMesh::distribute(global, Tpetra::getDefaultComm());
+        }
+        m = dm->view<D>();
+        const LO nc = dm->nCells, nn = dm->nNodes;
+        state = Field("bench::state", nc, S::ncomp);
+        stateNew = Field("bench::stateNew", nc, S::ncomp);
+        x = Field("bench::x", nn, D);
+        xNew = Field("bench::xNew", nn, D);
+        vnode = Field("bench::vnode", nn, D);
+        fnode = Field("bench::fnode", dm->nOwnedNodes, D);
+        aux = Field("bench::aux", nc, Aux::ncomp);
+        geom = CellGeometry(nc, D);
+        mass = View<double*>("bench::mass", nc);
+        cellMaterial = View<int*>("bench::cellMaterial", nc); // zero: one material
+        materials = View<Material*>("bench::materials", 1);
+        Kokkos::deep_copy(materials, Material{1.4, 1.0});
+
+        // Every boundary group is a slip wall.
+        const int ng = std::max(int(dm->boundaryNames.size()), 1);
+        View<int*> type("bench::bcType", ng);
+        Kokkos::View<double* [3], MemSpace> value("bench::bcValue", ng);
+        Kokkos::deep_copy(type, int(BcSlipWall));
+        bc.type = type;
+        bc.value = value;
+
+        // Coordinates, geometry, then a smooth state at the cell centroids:
+        // rho = 1 + 0.1 x, p = 1 + 0.5 sin(3x) cos(2y), v = 0.05 (sin(2y), -sin(2x)[, 0.5 sin(2x + y)]).
+        {
+            auto xh = Kokkos::create_mirror_view(x);
+            for (LO n = 0; n < nn; ++n)
+                for (int d = 0; d < D; ++d)
+                    xh(n, d) = dm->coords0[3 * n + d];
+            Kokkos::deep_copy(x, xh);
+        }
+        if (!(computeGeometry<D>(m, x, geom, nc) > 0.0))
+            throw std::runtime_error("a cell of the mesh has non-positive volume");
+        auto vol = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), geom.volume);
+        auto sh = Kokkos::create_mirror_view(state);
+        auto massH = Kokkos::create_mirror_view(mass);
+        const double gamma = 1.4;
+        for (LO i = 0; i < nc; ++i)
+        {
+            double c[3] = {0, 0, 0};
+            for (int k = 0; k < D + 1; ++k)
+                for (int d = 0; d < D; ++d)
+                    c[d] += dm->coords0[3 * dm->cellNodesHost[(D + 1) * i + k] + d] / (D + 1);
+            const double rho = 1.0 + 0.1 * c[0];
+            const double p = 1.0 + 0.5 * std::sin(3.0 * c[0]) * std::cos(2.0 * c[1]);
+            double v[3] = {0.05 * std::sin(2.0 * c[1]), -0.05 * std::sin(2.0 * c[0]), 0.025 * std::sin(2.0 * c[0] + c[1])};
+            double kin = 0.0;
+            for (int d = 0; d < D; ++d)
+            {
+                sh(i, S::vel + d) = v[d];
+                kin += 0.5 * v[d] * v[d];
+            }
+            sh(i, S::omega) = 1.0 / rho;
+            sh(i, S::energy) = p / ((gamma - 1.0) * rho) + kin;
+            massH(i) = rho * vol(i);
+        }
+        Kokkos::deep_copy(state, sh);
+        Kokkos::deep_copy(mass, massH);
+
+        // One real step to fix a CFL time step and check that the update is valid.
+        computeEos<D>(state, cellMaterial, materials, aux, nc);
+        nodalSolve<D>(m, bc, state, aux, geom, vnode, fnode);
+        dt = stableTimeStep<D>(m, aux, geom, vnode, 0.5, 0.1);
+        moveNodes(x, vnode, dt, xNew, nn, D);
+        const UpdateCheck check = updateCells<D>(m, state, aux, geom, mass, x, xNew, vnode, dt, stateNew);
+        if (!(dt > 0.0) || !(check.minVolumeRatio > 0.0) || !(check.minInternalEnergy > 0.0))
+            throw std::runtime_error("the benchmark state does not give a valid step (dt " + std::to_string(dt) + ")");
+    }
+};
+
+struct MeshSpec
+{
+    const char* label; //!< nominal cell count, used in benchmark names
+    double h;
+};
+const MeshSpec sizes2d[] = {{"4k", 0.0288}, {"16k", 0.0144}, {"64k", 0.0072}, {"250k", 0.00365}};
+const MeshSpec sizes3d[] = {{"8k", 0.1}, {"64k", 0.05}}; // 8.3k and 64.4k tetrahedra
+
+//! Meshes built on first use, by dimension and size; destroyed in main before Kokkos is finalized.
+struct Cache
+{
+    std::map<double, std::unique_ptr<Fixture<2>>> f2;
+    std::map<double, std::unique_ptr<Fixture<3>>> f3;
+};
+Cache* cache = nullptr;
+
+template <int D>
+Fixture<D>* fixture(benchmark::State& state, double h)
+{
+    auto& map = [&]() -> auto& {
+        if constexpr (D == 2)
+            return cache->f2;
+        else
+            return cache->f3;
+    }();
+    auto it = map.find(h);
+    if (it == map.end())
+    {
+        const fs::path geo = inputsDir() / "geometry" / (D == 2 ? "quadrant2d.geo" : "octant3d.geo");
+        try
+        {
+            it = map.emplace(h, std::make_unique<Fixture<D>>(geo, h)).first;
+        }
+        catch (const std::exception& e)
+        {
+            state.SkipWithError(e.what());
+            return nullptr;
+        }
+    }
+    return it->second.get();
+}
+
+template <class F>
+void timed(benchmark::State& state, F&& body)
+{
+    for (auto _ : state)
+    {
+        Kokkos::fence();
+        const auto t0 = Clock::now();
+        body();
+        Kokkos::fence();
+        state.SetIterationTime(std::chrono::duration<double>(Clock::now() - t0).count());
+    }
+}
+
+void setCounters(benchmark::State& state, const DistributedMesh& dm, bool nodes)
+{
+    state.counters["cells/s"] = benchmark::Counter(dm.nOwnedCells, benchmark::Counter::kIsIterationInvariantRate);
+    if (nodes)
+        state.counters["nodes/s"] = benchmark::Counter(dm.nOwnedNodes, benchmark::Counter::kIsIterationInvariantRate);
+    state.counters["cells"] = double(dm.nOwnedCells);
+    state.counters["nodes"] = double(dm.nOwnedNodes);
+}
+
+template <int D>
+void benchGeometry(benchmark::State& state, double h)
+{
+    Fixture<D>* f = fixture<D>(state, h);
+    if (!f)
+        return;
+    timed(state, [&] { benchmark::DoNotOptimize(computeGeometry<D>(f->m, f->x, f->geom, f->m.nCells)); });
+    setCounters(state, *f->dm, false);
+    // Compulsory traffic: connectivity and results per cell, coordinates once per node.
+    const double bytes = double(f->m.nCells) * ((D + 1) * sizeof(LO) + (2 + (D + 1) * D) * sizeof(double)) +
+                         double(f->m.nNodes) * D * sizeof(double);
+    state.SetBytesProcessed(int64_t(bytes * double(state.iterations())));
+}
+
+template <int D>
+void benchNodal(benchmark::State& state, double h)
+{
+    Fixture<D>* f = fixture<D>(state, h);
+    if (!f)
+        return;
+    timed(state, [&] { nodalSolve<D>(f->m, f->bc, f->state, f->aux, f->geom, f->vnode, f->fnode); });
+    setCounters(state, *f->dm, true);
+}
+
+template <int D>
+void benchUpdate(benchmark::State& state, double h)
+{
+    Fixture<D>* f = fixture<D>(state, h);
+    if (!f)
+        return;
+    timed(state, [&] {
+        moveNodes(f->x, f->vnode, f->dt, f->xNew, f->m.nNodes, D);
+        benchmark::DoNotOptimize(
+            updateCells<D>(f->m, f->state, f->aux, f->geom, f->mass, f->x, f->xNew, f->vnode, f->dt, f->stateNew));
+    });
+    setCounters(state, *f->dm, false);
+}
+
+template <int D>
+void benchStep(benchmark::State& state, double h)
+{
+    Fixture<D>* f = fixture<D>(state, h);
+    if (!f)
+        return;
+    double phase[4] = {0, 0, 0, 0}; // geometry, eos, nodal, update
+    auto lap = [](Clock::time_point& t, double& acc) {
+        Kokkos::fence();
+        const auto now = Clock::now();
+        acc += std::chrono::duration<double>(now - t).count();
+        t = now;
+    };
+    for (auto _ : state)
+    {
+        Kokkos::fence();
+        const auto t0 = Clock::now();
+        auto t = t0;
+        benchmark::DoNotOptimize(computeGeometry<D>(f->m, f->x, f->geom, f->m.nCells));
+        lap(t, phase[0]);
+        computeEos<D>(f->state, f->cellMaterial, f->materials, f->aux, f->m.nCells);
+        lap(t, phase[1]);
+        nodalSolve<D>(f->m, f->bc, f->state, f->aux, f->geom, f->vnode, f->fnode);
+        lap(t, phase[2]);
+        moveNodes(f->x, f->vnode, f->dt, f->xNew, f->m.nNodes, D);
+        benchmark::DoNotOptimize(
+            updateCells<D>(f->m, f->state, f->aux, f->geom, f->mass, f->x, f->xNew, f->vnode, f->dt, f->stateNew));
+        lap(t, phase[3]);
+        state.SetIterationTime(std::chrono::duration<double>(t - t0).count());
+    }
+    setCounters(state, *f->dm, false);
+    const double total = phase[0] + phase[1] + phase[2] + phase[3];
+    if (total > 0.0)
+    {
+        state.counters["geometry"] = phase[0] / total;
+        state.counters["eos"] = phase[1] / total;
+        state.counters["nodal"] = phase[2] / total;
+        state.counters["update"] = phase[3] / total;
+    }
+}
+
+template <int D, std::size_t N>
+void registerAll(const MeshSpec (&specs)[N])
+{
+    using Fn = void (*)(benchmark::State&, double);
+    const std::pair<const char*, Fn> kernels[] = {
+        {"geometry", benchGeometry<D>}, {"nodal_solve", benchNodal<D>}, {"cell_update", benchUpdate<D>}, {"step", benchStep<D>}};
+    for (const auto& [kernel, fn] : kernels)
+        for (const MeshSpec& s : specs)
+        {
+            const std::string name = std::string(kernel) + "/" + std::to_string(D) + "D/" + s.label;
+            const double h = s.h;
+            benchmark::RegisterBenchmark(name.c_str(), [fn, h](benchmark::State& st) { fn(st, h); })
+                ->UseManualTime()
+                ->Unit(benchmark::kMicrosecond);
+        }
+}
+
+} // namespace
+
+int main(int argc, char** argv)
+{
+    Tpetra::ScopeGuard scope(&argc, &argv);
+    benchmark::Initialize(&argc, argv);
+    if (benchmark::ReportUnrecognizedArguments(argc, argv))
+        return 1;
+    std::printf("unilag_bench: Kokkos %s, concurrency %d; inputs %s\n", ExecSpace::name(),
+                int(ExecSpace::concurrency()), inputsDir().string().c_str());
+    std::fflush(stdout);
+
+    registerAll<2>(sizes2d);
+    registerAll<3>(sizes3d);
+
+    cache = new Cache;
+    benchmark::RunSpecifiedBenchmarks();
+    benchmark::Shutdown();
+    delete cache; // every View (and Tpetra map) goes before the scope guard finalizes Kokkos
+    cache = nullptr;
+    return 0;
+}
