@@ -69,7 +69,7 @@ void allSum(MPI_Comm comm, double (&v)[N])
 //! Phase timers (seconds), Laghos style.
 struct Timers
 {
-    double geometry = 0, nodal = 0, update = 0, halo = 0, io = 0, setup = 0;
+    double geometry = 0, nodal = 0, update = 0, halo = 0, io = 0;
 };
 
 class ScopedTimer
