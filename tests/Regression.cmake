@@ -19,6 +19,9 @@ add_test(NAME sedov2d_convergence COMMAND ${PYTHON} ${SCRIPTS}/sedov_convergence
 # 3D Sedov octant runs to t = 1 and conserves.
 add_test(NAME sedov3d_octant
          COMMAND ${UNILAG} run ${INPUTS}/sedov3d.yaml --quiet --check --output ${WORK}/sedov3d)
+# Free (zero-traction) boundaries: a gas square expanding into vacuum conserves mass, momentum and energy.
+add_test(NAME free_expansion COMMAND ${UNILAG} run ${SCENES}/free_expansion.yaml --quiet --check --output ${WORK}/free)
+set_tests_properties(free_expansion PROPERTIES LABELS regression)
 # Kidder's shell under imposed boundary pressures: inner-radius error of first order, outer radius within 1%.
 add_test(NAME kidder2d_convergence COMMAND ${PYTHON} ${SCRIPTS}/kidder_convergence.py ${UNILAG} ${INPUTS}/kidder2d.yaml ${WORK})
 set_tests_properties(sedov2d_conservation sedov2d_convergence sedov3d_octant kidder2d_convergence PROPERTIES LABELS regression)
