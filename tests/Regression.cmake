@@ -22,6 +22,11 @@ add_test(NAME sedov3d_octant
 # Free (zero-traction) boundaries: a gas square expanding into vacuum conserves mass, momentum and energy.
 add_test(NAME free_expansion COMMAND ${UNILAG} run ${SCENES}/free_expansion.yaml --quiet --check --output ${WORK}/free)
 set_tests_properties(free_expansion PROPERTIES LABELS regression)
+# Mie-Grueneisen copper hit by a piston: the Rankine-Hugoniot state (linear Us-up Hugoniot) within 2%.
+add_test(NAME mg_piston_run COMMAND ${UNILAG} run ${SCENES}/mg_piston.yaml --quiet --check --output ${WORK}/mg_piston)
+set_tests_properties(mg_piston_run PROPERTIES FIXTURES_SETUP mg_piston LABELS regression)
+add_test(NAME mg_piston_hugoniot COMMAND ${PYTHON} ${SCRIPTS}/piston_shock.py ${WORK}/mg_piston 8930 9996.9 2.0918e10 0.4685 0.05 0.02)
+set_tests_properties(mg_piston_hugoniot PROPERTIES FIXTURES_REQUIRED mg_piston LABELS regression)
 # Kidder's shell under imposed boundary pressures: inner-radius error of first order, outer radius within 1%.
 add_test(NAME kidder2d_convergence COMMAND ${PYTHON} ${SCRIPTS}/kidder_convergence.py ${UNILAG} ${INPUTS}/kidder2d.yaml ${WORK})
 set_tests_properties(sedov2d_conservation sedov2d_convergence sedov3d_octant kidder2d_convergence PROPERTIES LABELS regression)

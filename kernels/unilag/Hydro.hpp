@@ -15,6 +15,7 @@
 #pragma once
 
 #include "unilag/Geometry.hpp"
+#include "unilag/Gpr.hpp"
 #include "unilag/Reduce.hpp"
 
 namespace unilag
@@ -39,25 +40,8 @@ struct Aux
     static constexpr int ncomp = 3;
 };
 
-//! Material parameters (plain data, one entry per material, read inside kernels).
-struct Material
-{
-    double gamma = 1.4; //!< ideal gas ratio of specific heats
-    double cv = 1.0;    //!< specific heat at constant volume (temperature output)
-};
-
-//! Ideal gas: p = (gamma - 1) rho eps, c^2 = gamma p / rho.
-struct IdealGas
-{
-    KOKKOS_INLINE_FUNCTION static double pressure(const Material& m, double rho, double eps)
-    {
-        return (m.gamma - 1.0) * rho * eps;
-    }
-    KOKKOS_INLINE_FUNCTION static double soundSpeed(const Material& m, double rho, double p)
-    {
-        return Kokkos::Experimental::sqrt(Kokkos::Experimental::fmax(m.gamma * p / rho, 0.0));
-    }
-};
+//! Material parameters (plain data, one entry per material, read inside kernels): the EOS of gpr.md 1.3.
+using Material = gpr::EosParams;
 
 enum BcType : int
 {
@@ -75,7 +59,7 @@ struct BoundaryView
 };
 
 //! Derived cell quantities (pressure, sound speed, impedance z = rho c) for cells [0, nCells).
-template <int D, class Eos = IdealGas>
+template <int D>
 void computeEos(const ConstField& state, const View<const int*>& cellMaterial, const View<const Material*>& materials,
                 const Field& aux, LO nCells)
 {
@@ -87,8 +71,8 @@ void computeEos(const ConstField& state, const View<const int*>& cellMaterial, c
         for (int d = 0; d < D; ++d)
             kin += 0.5 * state(i, S::vel + d) * state(i, S::vel + d);
         const Material& m = materials(cellMaterial(i));
-        const double p = Eos::pressure(m, rho, state(i, S::energy) - kin);
-        const double c = Eos::soundSpeed(m, rho, p);
+        const double p = gpr::pressure(m, rho, state(i, S::energy) - kin);
+        const double c = Kokkos::Experimental::sqrt(Kokkos::Experimental::fmax(gpr::soundSpeed2(m, rho, p), 0.0));
         aux(i, Aux::pressure) = p;
         aux(i, Aux::sound) = c;
         aux(i, Aux::impedance) = rho * c;
@@ -297,11 +281,11 @@ inline void moveNodes(const ConstField& x, const ConstField& vnode, double dt, c
     Kokkos::parallel_for("unilag::hydro::move_nodes", range(n), move);
 }
 
-//! Extrema reported by the cell update; a step is accepted only if all volumes and energies stay positive.
+//! Extrema reported by the cell update; a step is accepted only if volumes and squared sound speeds stay positive.
 struct UpdateCheck
 {
     double minVolumeRatio; //!< min |T^{n+1}| / |T^n|
-    double minInternalEnergy;
+    double minSound2;      //!< min squared sound speed of the new states (must stay positive)
     double maxGclDefect;   //!< max |m omega - |T^{n+1}|| / |T^{n+1}|
     LO worstCell;          //!< a cell with the smallest volume ratio or internal energy (-1 if none bad)
 };
@@ -310,8 +294,9 @@ struct UpdateCheck
  *  writing stateNew. Returns the validity extrema. */
 template <int D>
 UpdateCheck updateCells(const MeshView<D>& mesh, const ConstField& state, const ConstField& aux,
-                        const CellGeometry& geom, const View<const double*>& mass, const ConstField& x,
-                        const ConstField& xNew, const ConstField& vnode, double dt, const Field& stateNew)
+                        const CellGeometry& geom, const View<const double*>& mass, const View<const int*>& cellMaterial,
+                        const View<const Material*>& materials, const ConstField& x, const ConstField& xNew,
+                        const ConstField& vnode, double dt, const Field& stateNew)
 {
     using S = HydroState<D>;
     constexpr int NV = D + 1;
@@ -364,14 +349,17 @@ UpdateCheck updateCells(const MeshView<D>& mesh, const ConstField& state, const 
         stateNew(i, S::omega) = omega;
 
         const double ratio = sNew.volume / volume(i);
-        double eps = E - kin;
-        if (!(eps == eps) || !(omega == omega))
-            eps = -Kokkos::reduction_identity<double>::min(); // NaN: report as the worst possible
+        // Admissible state: a positive squared sound speed (for an ideal gas: a positive internal energy).
+        const double rhoNew = 1.0 / omega;
+        const Material& m = materials(cellMaterial(i));
+        double c2 = gpr::soundSpeed2(m, rhoNew, gpr::pressure(m, rhoNew, E - kin));
+        if (!(c2 == c2) || !(omega == omega))
+            c2 = -Kokkos::reduction_identity<double>::min(); // NaN: report as the worst possible
         ext[0] = Kokkos::Experimental::fmin(ext[0], ratio);
-        ext[1] = Kokkos::Experimental::fmin(ext[1], eps);
+        ext[1] = Kokkos::Experimental::fmin(ext[1], c2);
         ext[2] = Kokkos::Experimental::fmin(ext[2], -Kokkos::Experimental::fabs(mass(i) * omegaGcl - sNew.volume) /
                                                          sNew.volume);
-        if (ratio <= 0.0 || eps <= 0.0)
+        if (ratio <= 0.0 || c2 <= 0.0)
             ext[3] = Kokkos::Experimental::fmin(ext[3], double(i));
     };
     double ext[4];

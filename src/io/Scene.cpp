@@ -443,11 +443,26 @@ Scene readScene(const std::string& file, const std::vector<std::string>& overrid
         {
             Node m = mats.sub(name);
             MaterialSpec spec;
-            spec.eos = m.choice("eos", "", {"ideal_gas"}, true);
-            spec.gamma = m.number("gamma", 1.4);
-            if (!(spec.gamma > 1.0))
-                m.fail("gamma", "an ideal gas needs gamma > 1, found " + std::to_string(spec.gamma));
+            spec.eos = m.choice("eos", "", {"ideal_gas", "mie_gruneisen", "neo_hookean"}, true);
             spec.cv = m.positive("cv", 1.0);
+            if (spec.eos == "ideal_gas")
+            {
+                spec.gamma = m.number("gamma", 1.4);
+                if (!(spec.gamma > 1.0))
+                    m.fail("gamma", "an ideal gas needs gamma > 1, found " + std::to_string(spec.gamma));
+            }
+            else if (spec.eos == "mie_gruneisen")
+            {
+                spec.rho0 = m.positive("rho0", 0.0, true);
+                spec.c0 = m.positive("c0", 0.0, true);
+                spec.Gamma0 = m.positive("Gamma0", 0.0, true);
+                spec.s = m.nonNegative("s", 0.0);
+            }
+            else
+            {
+                spec.rho0 = m.positive("rho0", 0.0, true);
+                spec.csh = m.positive("csh", 0.0, true);
+            }
             m.rejectUnknown();
             s.materials[name] = spec;
         }

@@ -34,9 +34,11 @@ struct Expr
 
 struct MaterialSpec
 {
-    std::string eos = "ideal_gas";
-    double gamma = 1.4;
+    std::string eos = "ideal_gas"; //!< ideal_gas, mie_gruneisen, neo_hookean (gpr.md 1.3)
+    double gamma = 1.4;             //!< ideal gas
     double cv = 1.0;
+    double rho0 = 1.0, c0 = 1.0, Gamma0 = 0.0, s = 0.0; //!< Mie-Grueneisen (rho0 also neo-Hookean)
+    double csh = 0.0;                                    //!< neo-Hookean modulus rho0 csh^2
 };
 
 struct RegionSpec

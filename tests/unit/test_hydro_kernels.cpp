@@ -227,7 +227,7 @@ template <int D> struct Hydro
         bc.value = value;
 
         auto mh = Kokkos::create_mirror_view(materials);
-        mh(0) = unilag::Material{gamma, 1.0};
+        mh(0) = unilag::gpr::idealGasEos(gamma, 1.0);
         Kokkos::deep_copy(materials, mh);
         Kokkos::deep_copy(cellMaterial, 0);
 
@@ -284,7 +284,8 @@ template <int D> struct Hydro
         unilag::nodalSolve<D>(mesh, bc, state, aux, geom, vnode, fnode);
         dt = unilag::stableTimeStep<D>(mesh, aux, geom, vnode, 0.5, 0.1);
         unilag::moveNodes(x, vnode, dt, xNew, nNodes, D);
-        const auto check = unilag::updateCells<D>(mesh, state, aux, geom, mass, x, xNew, vnode, dt, stateNew);
+        const auto check =
+            unilag::updateCells<D>(mesh, state, aux, geom, mass, cellMaterial, materials, x, xNew, vnode, dt, stateNew);
         std::swap(state, stateNew);
         std::swap(x, xNew);
         refresh();
