@@ -22,6 +22,7 @@ struct MeshView
     View<const LO*> nodeCornerOffsets;                                 //!< map: node -> corners (CSR offsets)
     View<const LO*> nodeCorners;                                       //!< corner id = cell * NV + k, sorted by global cell id
     View<const int**> cellFaceGroup; //!< boundary group of face k of a cell, -1 if interior (LayoutRight default)
+    View<const LO**> cellNeighbour;  //!< local cell across face k, -1 on the boundary (complete for owned cells)
     LO nOwnedCells = 0, nCells = 0;  //!< owned cells first, then ghosts
     LO nOwnedNodes = 0, nNodes = 0;  //!< owned nodes first, then the other nodes of local cells
 };

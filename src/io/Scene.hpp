@@ -39,6 +39,19 @@ struct MaterialSpec
     double cv = 1.0;
     double rho0 = 1.0, c0 = 1.0, Gamma0 = 0.0, s = 0.0; //!< Mie-Grueneisen (rho0 also neo-Hookean)
     double csh = 0.0;                                    //!< neo-Hookean modulus rho0 csh^2
+
+    // GPR constitutive model (gpr.md 1.2, 1.4). rho0 above is also the reference density of G_e (at rest
+    // G_e = (rho/rho0)^{2/3} I) and of the relaxation laws; for an ideal gas it defaults to 1.
+    double shearSpeed = 0.0;          //!< c_sh >= 0 (key shear_sound_speed); 0 with law "fluid"
+    std::string strainLaw = "fluid";  //!< fluid (no shear stress), viscous, elastic, constant, plastic
+    double tau1 = 0.0;                //!< relaxation time: constant law as given; viscous 6 mu/(rho0 csh^2); elastic +inf
+    double viscosity = 0.0;           //!< viscous law: mu
+    double tau10 = 0.0, yieldStress = 0.0, exponent = 0.0; //!< plastic law tau1 = tau10 (sigma_Y / sigma_bar)^n
+    bool heatConduction = false;      //!< key heat_conduction present
+    double alpha = 0.0;               //!< heat: alpha
+    double tau2 = 0.0;                //!< heat: relaxation time (given, or from kappa: tau2 = kappa rho0/(alpha^2 theta0))
+    double kappa = 0.0;               //!< heat: Fourier conductivity (given, or from tau2)
+    double theta0 = 0.0;              //!< heat: reference temperature
 };
 
 struct RegionSpec
@@ -54,9 +67,12 @@ struct RegionSpec
 
 struct BoundarySpec
 {
-    std::string type; //!< free, slip_wall, symmetry, velocity, pressure
+    std::string type; //!< free, slip_wall, symmetry, velocity, pressure, traction
     std::array<double, 3> velocity{0.0, 0.0, 0.0};
     Expr pressure; //!< imposed pressure (normal traction -p n): a constant or an expression of t
+    std::array<double, 3> traction{0.0, 0.0, 0.0}; //!< imposed traction vector T n (type traction)
+    std::string thermal = "adiabatic"; //!< adiabatic (q . n = 0) or isothermal
+    double temperature = 0.0;          //!< isothermal wall temperature (> 0)
 };
 
 struct Scene
@@ -85,6 +101,10 @@ struct Scene
     double maxGrowth = 1.1;
     long maxSteps = 10000000;
     int maxRetries = 8;
+
+    // scheme
+    double picardTolerance = 1e-10; //!< max_i |sigma^{l+1} - sigma^l|_F / (rho_i a_i^2) to stop the Picard loop
+    int picardMaxIterations = 50;   //!< cap: the step is cut and retried when it is reached
 
     std::string outputDirectory = "output";
     double outputInterval = 0.0; //!< 0: first and last state only

@@ -1,0 +1,135 @@
+/*! \file Physics.hpp
+ *  \brief What the kernels are compiled for: the physics variant of a scene, the material data, the column
+ *  layouts of the cell state and of the derived (auxiliary) cell quantities, and the boundary tables.
+ *
+ *  A scene pays only for what it uses (gpr.md 1; issue 3 item 5): the kernels are templates on a Physics tag,
+ *  chosen once per run from the materials,
+ *   - strain:  some material has shear stiffness (c_sh > 0): the state carries G_e, the nodal solver the stress
+ *              sigma, and the Picard loop iterates it;
+ *   - plastic: some material relaxes G_e with the power law tau1(sigma_bar);
+ *   - heat:    some material conducts heat: the state carries J, and the Rusanov heat fluxes run.
+ *  The hydrodynamic variant (all false) has exactly the columns and the work of the Euler solver.
+ */
+#pragma once
+
+#include "unilag/Gpr.hpp"
+#include "unilag/Types.hpp"
+
+namespace unilag
+{
+
+template <bool Strain, bool Plastic, bool Heat>
+struct Physics
+{
+    static_assert(Strain || !Plastic, "plasticity needs the strain (G_e) equations");
+    static constexpr bool strain = Strain;
+    static constexpr bool plastic = Plastic;
+    static constexpr bool heat = Heat;
+};
+using PhysicsHydro = Physics<false, false, false>;
+
+//! Column indices of the cell state (a Tpetra MultiVector on the overlapping cell map).
+template <int D, class P = PhysicsHydro>
+struct StateLayout
+{
+    static constexpr int omega = 0;        //!< specific volume 1/rho
+    static constexpr int vel = 1;          //!< velocity, D columns
+    static constexpr int energy = 1 + D;   //!< specific total energy E = eps + |v|^2/2 + E_e(G) + alpha^2 |J|^2/2
+    static constexpr int G = 2 + D;        //!< G_e as Sym3 (xx, yy, zz, xy, xz, yz), 6 columns (strain only)
+    static constexpr int J = G + (P::strain ? 6 : 0); //!< thermal impulse, D columns (heat only)
+    static constexpr int ncomp = J + (P::heat ? D : 0);
+};
+
+//! The hydrodynamic state: the first 2 + D columns of every layout.
+template <int D>
+using HydroState = StateLayout<D, PhysicsHydro>;
+
+//! Column indices of per-cell quantities derived from the state (EOS, temperature, stress).
+struct Aux
+{
+    static constexpr int pressure = 0;  //!< EOS pressure p(rho, eps)
+    static constexpr int sound = 1;     //!< signal speed a = sqrt(c0^2 + 4/3 c_sh^2 + c_h^2) (gpr.md 1.5)
+    static constexpr int impedance = 2; //!< z = rho a
+    static constexpr int eps = 3;       //!< specific internal energy eps = E - kinetic - elastic - thermal
+    static constexpr int theta = 4;     //!< temperature (heat only; 0 otherwise)
+    static constexpr int stress = 5;    //!< shear stress sigma as Sym3, 6 columns (strain only)
+    template <class P>
+    static constexpr int ncomp()
+    {
+        return P::strain ? stress + 6 : stress;
+    }
+};
+
+enum StrainLaw : int
+{
+    StrainNone = 0,     //!< ideal fluid: no shear stress, G_e not evolved for this material
+    StrainConstant = 1, //!< fixed tau1 (viscous fluid, hydro limit 1e-14, elastic +inf)
+    StrainPlastic = 2   //!< tau1 = tau10 (sigma_Y / sigma_bar)^n
+};
+
+//! Material parameters (plain data, one entry per material, read inside kernels).
+struct Material
+{
+    gpr::EosParams eos;          //!< gpr.md 1.3
+    double csh = 0.0;            //!< shear sound speed c_sh
+    double rho0 = 1.0;           //!< reference density: G_e = (rho/rho0)^{2/3} I at rest; heat relaxation
+    int strainLaw = StrainNone;  //!< StrainLaw
+    double tau1 = 0.0;           //!< StrainConstant: relaxation time (+inf: elastic)
+    double tau10 = 0.0, sigmaY = 0.0, exponent = 0.0; //!< StrainPlastic
+    int heat = 0;                //!< 1: conducts heat
+    double alpha = 0.0, tau2 = 0.0, theta0 = 1.0;      //!< heat: alpha, relaxation time, reference temperature
+};
+
+//! Material of an ideal fluid with the given EOS (no shear, no heat): the Euler equations.
+KOKKOS_INLINE_FUNCTION Material fluidMaterial(const gpr::EosParams& eos)
+{
+    Material m;
+    m.eos = eos;
+    return m;
+}
+
+enum BcType : int
+{
+    BcFree = 0,     //!< zero traction
+    BcSlipWall = 1, //!< v . n = 0 (also symmetry planes)
+    BcVelocity = 2, //!< imposed velocity vector (piston, clamped)
+    BcPressure = 3, //!< imposed pressure: normal traction -p n (free surface when p = 0)
+    BcTraction = 4  //!< imposed traction vector T n
+};
+
+enum ThermalBc : int
+{
+    ThermalAdiabatic = 0, //!< q . n = 0
+    ThermalIsothermal = 1 //!< imposed wall temperature
+};
+
+//! Boundary conditions by boundary group id (the group of a face is MeshView::cellFaceGroup).
+struct BoundaryView
+{
+    View<const int*> type;                           //!< group -> BcType
+    Kokkos::View<const double* [3], MemSpace> value; //!< group -> imposed velocity or traction, or pressure in 0
+    View<const int*> thermal;                        //!< group -> ThermalBc (heat variants only)
+    View<const double*> temperature;                 //!< group -> isothermal wall temperature
+};
+
+//! A Sym3 from six consecutive columns (xx, yy, zz, xy, xz, yz) of a field row.
+template <class F>
+KOKKOS_INLINE_FUNCTION gpr::Sym3 loadSym3(const F& field, LO i, int col)
+{
+    return gpr::Sym3{field(i, col), field(i, col + 1), field(i, col + 2),
+                     field(i, col + 3), field(i, col + 4), field(i, col + 5)};
+}
+
+//! Store a Sym3 into six consecutive columns (xx, yy, zz, xy, xz, yz) of a field row.
+template <class F>
+KOKKOS_INLINE_FUNCTION void storeSym3(const F& field, LO i, int col, const gpr::Sym3& g)
+{
+    field(i, col) = g.xx;
+    field(i, col + 1) = g.yy;
+    field(i, col + 2) = g.zz;
+    field(i, col + 3) = g.xy;
+    field(i, col + 4) = g.xz;
+    field(i, col + 5) = g.yz;
+}
+
+} // namespace unilag
