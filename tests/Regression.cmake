@@ -112,3 +112,9 @@ add_test(NAME hydro_limit_gpr COMMAND ${UNILAG} run ${INPUTS}/sedov2d_gpr.yaml -
 set_tests_properties(hydro_limit_euler hydro_limit_gpr PROPERTIES FIXTURES_SETUP hydro_limit LABELS "gpr;regression")
 add_test(NAME hydro_limit_agree COMMAND ${PYTHON} ${SCRIPTS}/compare_runs.py 1e-6 ${WORK}/hydro_limit_euler ${WORK}/hydro_limit_gpr)
 set_tests_properties(hydro_limit_agree PROPERTIES FIXTURES_REQUIRED hydro_limit LABELS "gpr;regression")
+
+# Imposed traction on an elastic block: velocity behind the longitudinal wave p / (rho c_L) and its front c_L t within 2%.
+add_test(NAME traction_wave_run COMMAND ${UNILAG} run ${SCENES}/traction_wave.yaml --quiet --check --output ${WORK}/traction_wave)
+set_tests_properties(traction_wave_run PROPERTIES FIXTURES_SETUP traction_wave LABELS "gpr;regression")
+add_test(NAME traction_wave_check COMMAND ${PYTHON} ${SCRIPTS}/traction_wave.py ${WORK}/traction_wave 4.3301e-3 0.69282 0.4 0.02)
+set_tests_properties(traction_wave_check PROPERTIES FIXTURES_REQUIRED traction_wave LABELS "gpr;regression")
