@@ -118,3 +118,16 @@ add_test(NAME traction_wave_run COMMAND ${UNILAG} run ${SCENES}/traction_wave.ya
 set_tests_properties(traction_wave_run PROPERTIES FIXTURES_SETUP traction_wave LABELS "gpr;regression")
 add_test(NAME traction_wave_check COMMAND ${PYTHON} ${SCRIPTS}/traction_wave.py ${WORK}/traction_wave 4.3301e-3 0.69282 0.4 0.02)
 set_tests_properties(traction_wave_check PROPERTIES FIXTURES_REQUIRED traction_wave LABELS "gpr;regression")
+
+# Every GPR equation at once (viscous, heat-conducting 3D Sedov): 1, 2, 3 ranks and 1, 2 threads give the same fields.
+foreach(run "1;1" "1;2" "2;1" "3;1")
+  list(GET run 0 np)
+  list(GET run 1 nt)
+  add_test(NAME gpr3d_np${np}_t${nt} COMMAND ${MPI_RUN} ${np} ${UNILAG} run ${SCENES}/sedov3d_viscous_heat.yaml --quiet --check
+           --output ${WORK}/gpr3d_np${np}_t${nt})
+  set_tests_properties(gpr3d_np${np}_t${nt} PROPERTIES ENVIRONMENT "OMP_NUM_THREADS=${nt}" FIXTURES_SETUP gpr3d
+                       LABELS "gpr;mpi;regression" PROCESSORS ${np})
+endforeach()
+add_test(NAME gpr3d_agree COMMAND ${PYTHON} ${SCRIPTS}/compare_runs.py 1e-12 ${WORK}/gpr3d_np1_t1 ${WORK}/gpr3d_np1_t2
+         ${WORK}/gpr3d_np2_t1 ${WORK}/gpr3d_np3_t1)
+set_tests_properties(gpr3d_agree PROPERTIES FIXTURES_REQUIRED gpr3d LABELS "gpr;mpi;regression")
