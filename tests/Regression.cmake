@@ -131,3 +131,9 @@ endforeach()
 add_test(NAME gpr3d_agree COMMAND ${PYTHON} ${SCRIPTS}/compare_runs.py 1e-12 ${WORK}/gpr3d_np1_t1 ${WORK}/gpr3d_np1_t2
          ${WORK}/gpr3d_np2_t1 ${WORK}/gpr3d_np3_t1)
 set_tests_properties(gpr3d_agree PROPERTIES FIXTURES_REQUIRED gpr3d LABELS "gpr;mpi;regression")
+
+# A Picard loop capped below what an elastic step needs is never accepted unconverged: each step is cut and retried,
+# and when the retries run out the run stops with the diagnosis (exit 4, no NaN).
+add_test(NAME picard_cap_diagnosis COMMAND bash ${SCRIPTS}/expect_unstable.sh ${WORK}/picard_cap
+         -- ${UNILAG} run ${SCENES}/traction_wave.yaml --quiet --set scheme.picard_max_iterations=2 --set time.max_retries=3)
+set_tests_properties(picard_cap_diagnosis PROPERTIES LABELS "gpr;regression" PASS_REGULAR_EXPRESSION "Picard loop did not converge in 2 iterations(.|\n)*expect_unstable: PASS")

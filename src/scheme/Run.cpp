@@ -527,7 +527,8 @@ class GprSolver
             }
             if (!picardFailure.empty() && attempt >= scene_.maxRetries)
             {
-                failure = picardFailure;
+                failure = "at t = " + jsonNumber(t) + " after " + std::to_string(attempt) + " halvings of dt: " +
+                          picardFailure;
                 break;
             }
             if (!(check.minVolumeRatio > 0.0 && check.minSound2 > 0.0))
