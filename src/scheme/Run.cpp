@@ -750,7 +750,7 @@ class GprSolver
     bool picard(double dt, int& iterations, std::string& failure)
     {
         const auto& dm = *mesh_;
-        double change = 0.0;
+        double change = 0.0, prevChange = 0.0, omega = 1.0;
         for (int l = 0; l < scene_.picardMaxIterations; ++l)
         {
             iterations = l + 1;
@@ -784,6 +784,30 @@ class GprSolver
                 return true;
             if (l + 1 == scene_.picardMaxIterations)
                 break;
+            // Damping. The iteration map sigma -> v(sigma) -> sigma' has the Jacobian -K C^T M^{-1} C (K the
+            // stiffness dt rho c_sh^2, C the corner vectors, M the nodal impedance matrices): real eigenvalues in
+            // [-kappa, 0], kappa ~ CFL (c_sh / a)^2 times a mesh factor, which can exceed 1 on fine meshes. Plain
+            // Picard then diverges; sigma <- sigma + omega (sigma' - sigma) with omega = 2 / (2 + kappa) contracts by
+            // kappa / (2 + kappa) < 1 for any kappa. kappa is estimated from the observed contraction of the residual.
+            if (l >= 1 && change > 0.5 * prevChange)
+            {
+                const double r = change / prevChange;
+                const double kappa = omega == 1.0 ? r : (r + 1.0) / omega - 1.0;
+                omega = std::max(0.2, std::min(omega, 2.0 / (2.0 + std::max(kappa, 0.0))));
+            }
+            prevChange = change;
+            if (omega < 1.0)
+            {
+                auto so = sigma_->getLocalViewDevice(Tpetra::Access::ReadOnly);
+                auto snext = sigmaNext_->getLocalViewDevice(Tpetra::Access::ReadWrite);
+                const double w = omega;
+                auto damp = KOKKOS_LAMBDA(const LO i)
+                {
+                    for (int c = 0; c < 6; ++c)
+                        snext(i, c) = so(i, c) + w * (snext(i, c) - so(i, c));
+                };
+                Kokkos::parallel_for("unilag::gpr::picard_damping", range(m_.nOwnedCells), damp);
+            }
             std::swap(sigma_, sigmaNext_);
             {
                 ScopedTimer timer(timers_.halo);
