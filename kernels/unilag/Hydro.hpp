@@ -350,12 +350,14 @@ struct PicardCheck
  *  of the last nodal solve: positions x^{l+1} (xNew), rho^{l+1} = m / |T(x^{l+1})|, the velocity gradient
  *  L = (1/|T^n|) sum_r v_r (x) c_r^n, the transport G* = G^n - dt (G^n L + L^T G^n) (explicit in G^n), the stiff
  *  relaxation over dt (exact, det-preserving: relaxStrain / relaxPlasticStrain), and sigma^{l+1} = sigma(rho^{l+1}, G^{l+1}).
- *  Writes G^{l+1} into stateNew and sigma^{l+1} into sigmaNew; sigmaOld is the iterate the nodal solve used. */
+ *  Writes G^{l+1} into stateNew and sigma^{l+1} into sigmaNew; sigmaOld is the iterate the nodal solve used.
+ *  plasticHint (plastic variant, one per cell, NaN = none) carries each cell's plastic-flow parameter between calls. */
 template <int D, class P>
 PicardCheck strainUpdate(const MeshView<D>& mesh, const ConstField& state, const ConstField& aux,
                          const CellGeometry& geom, const View<const double*>& mass, const View<const int*>& cellMaterial,
                          const View<const Material*>& materials, const ConstField& xNew, const ConstField& vnode,
-                         double dt, const ConstField& sigmaOld, const Field& sigmaNew, const Field& stateNew)
+                         double dt, const ConstField& sigmaOld, const Field& sigmaNew, const Field& stateNew,
+                         const View<double*>& plasticHint = View<double*>())
 {
     static_assert(P::strain, "strainUpdate is for the strain variants");
     using S = StateLayout<D, P>;
@@ -393,7 +395,7 @@ PicardCheck strainUpdate(const MeshView<D>& mesh, const ConstField& state, const
             gpr::Sym3 G;
             if constexpr (P::plastic)
                 G = m.strainLaw == StrainPlastic
-                        ? gpr::relaxPlasticStrain(Gs, rho, m.csh, dt, m.tau10, m.sigmaY, m.exponent)
+                        ? gpr::relaxPlasticStrain(Gs, rho, m.csh, dt, m.tau10, m.sigmaY, m.exponent, &plasticHint(i))
                         : gpr::relaxStrain(Gs, dt, m.tau1);
             else
                 G = gpr::relaxStrain(Gs, dt, m.tau1);

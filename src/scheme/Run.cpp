@@ -7,6 +7,7 @@
 #include <filesystem>
 #include <fstream>
 #include <iomanip>
+#include <limits>
 #include <sstream>
 #include <unistd.h>
 
@@ -152,6 +153,11 @@ class GprSolver
             sigmaNext_ = Teuchos::rcp(new MV(dm.cellMapOverlap, 6));
             sigmaPrev_ = Teuchos::rcp(new MV(dm.cellMapOverlap, 6));
             sigma0_ = Teuchos::rcp(new MV(dm.cellMapOverlap, 6));
+            if constexpr (P::plastic)
+            {
+                plasticHint_ = View<double*>("unilag::plasticHint", dm.nOwnedCells);
+                Kokkos::deep_copy(plasticHint_, std::numeric_limits<double>::quiet_NaN());
+            }
             vnode0_ = Teuchos::rcp(new MV(dm.nodeMapOverlap, D));
         }
         if constexpr (P::heat)
@@ -765,7 +771,8 @@ class GprSolver
                 auto so = sigma_->getLocalViewDevice(Tpetra::Access::ReadOnly);
                 auto snext = sigmaNext_->getLocalViewDevice(Tpetra::Access::ReadWrite);
                 moveNodes(x, v, dt, xn, m_.nNodes, D);
-                pc = strainUpdate<D, P>(m_, s, aux_, geom_, mass_, cellMaterial_, materials_, xn, v, dt, so, snext, sn);
+                pc = strainUpdate<D, P>(m_, s, aux_, geom_, mass_, cellMaterial_, materials_, xn, v, dt, so, snext, sn,
+                                        plasticHint_);
             }
             double ext[3] = {pc.maxChange, -pc.minVolumeRatio, pc.badCell >= 0 ? 1.0 : 0.0};
             MPI_Allreduce(MPI_IN_PLACE, ext, 3, MPI_DOUBLE, MPI_MAX, comm_);
@@ -1138,6 +1145,7 @@ class GprSolver
     Teuchos::RCP<MV> sigmaPrev_, sigma0_;         //!< strain: sigma^{n-1}; the first iterate sigma^0
     Field fnode_, aux_;
     Field heatRate_; //!< heat: m dE/dt and m dJ/dt of the fluxes at t^n (owned cells)
+    View<double*> plasticHint_; //!< plastic: each owned cell's last plastic-flow parameter (warm start)
     long picardTotal_ = 0;
     int picardMax_ = 0;
     std::unique_ptr<std::ofstream> steps_;
