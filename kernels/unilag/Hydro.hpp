@@ -414,7 +414,7 @@ PicardCheck strainUpdate(const MeshView<D>& mesh, const ConstField& state, const
             ext[2] = Kokkos::Experimental::fmin(ext[2], double(i));
     };
     double ext[3];
-    minReduce<3>("unilag::gpr::strain_update", mesh.nOwnedCells, update, ext);
+    minReduce<3>("unilag::gpr::strain_update", mesh.nOwnedCells, update, ext, P::plastic);
     const bool bad = ext[2] < double(mesh.nOwnedCells);
     return PicardCheck{-ext[0], ext[1], bad ? LO(ext[2]) : LO(-1)};
 }

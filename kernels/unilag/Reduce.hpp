@@ -92,12 +92,19 @@ struct MinN
     }
 };
 
+/*! \brief N minima over [0, n). Minima do not depend on the order of the joins, so `dynamic` (dynamic scheduling,
+ *  for loops whose cost varies from cell to cell, e.g. plastic flow in part of the mesh) keeps results bitwise
+ *  identical for any thread count. */
 template <int N, class F>
-void minReduce(const char* label, LO n, const F& f, double (&out)[N])
+void minReduce(const char* label, LO n, const F& f, double (&out)[N], bool dynamic = false)
 {
     MinN<N, F> functor{N, f};
     Kokkos::View<double*, Kokkos::HostSpace, Kokkos::MemoryUnmanaged> result(out, N);
-    Kokkos::parallel_reduce(label, range(n), functor, result);
+    if (dynamic)
+        Kokkos::parallel_reduce(label, Kokkos::RangePolicy<ExecSpace, Kokkos::Schedule<Kokkos::Dynamic>>(0, n), functor,
+                                result);
+    else
+        Kokkos::parallel_reduce(label, range(n), functor, result);
 }
 
 } // namespace unilag
