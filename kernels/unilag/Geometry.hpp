@@ -105,6 +105,17 @@ struct CellGeometry
     }
 };
 
+//! Store the geometry of a simplex as cell i of g.
+template <int D>
+KOKKOS_INLINE_FUNCTION void storeGeometry(const CellGeometry& g, LO i, const Simplex<D>& s)
+{
+    g.volume(i) = s.volume;
+    g.length(i) = s.charLength();
+    for (int k = 0; k < D + 1; ++k)
+        for (int d = 0; d < D; ++d)
+            g.corner(i, k * D + d) = s.c[k][d];
+}
+
 template <int D>
 KOKKOS_INLINE_FUNCTION Vec<D> cornerVec(const Field& corner, LO i, int k)
 {
@@ -114,30 +125,24 @@ KOKKOS_INLINE_FUNCTION Vec<D> cornerVec(const Field& corner, LO i, int k)
     return c;
 }
 
-/*! \brief Volumes, corner vectors and lengths of cells [0, nCells) for positions x.
+/*! \brief Volumes, corner vectors and lengths of cells [first, nCells) for positions x.
  *  Returns the smallest volume found (<= 0 flags an inverted or degenerate cell). */
 template <int D>
-double computeGeometry(const MeshView<D>& mesh, const ConstField& x, const CellGeometry& g, LO nCells)
+double computeGeometry(const MeshView<D>& mesh, const ConstField& x, const CellGeometry& g, LO nCells, LO first = 0)
 {
     constexpr int NV = D + 1;
-    auto volume = g.volume;
-    auto length = g.length;
-    auto corner = g.corner;
     double minVolume = 0.0;
     auto geometry = KOKKOS_LAMBDA(const LO i, double& vmin)
     {
         Vec<D> xi[NV];
         gatherNodes<D>(mesh, x, i, xi);
         const Simplex<D> s(xi);
-        volume(i) = s.volume;
-        length(i) = s.charLength();
-        for (int k = 0; k < NV; ++k)
-            for (int d = 0; d < D; ++d)
-                corner(i, k * D + d) = s.c[k][d];
+        storeGeometry<D>(g, i, s);
         if (s.volume < vmin)
             vmin = s.volume;
     };
-    Kokkos::parallel_reduce("unilag::geometry::cells", range(nCells), geometry, Kokkos::Min<double>(minVolume));
+    Kokkos::parallel_reduce("unilag::geometry::cells", Kokkos::RangePolicy<ExecSpace>(first, std::max(first, nCells)),
+                            geometry, Kokkos::Min<double>(minVolume));
     return minVolume;
 }
 

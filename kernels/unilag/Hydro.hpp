@@ -433,18 +433,21 @@ struct UpdateCheck
  *   - strain: T = -p I + sigma with sigma the stress of the last nodal solve (`stress`, so that the forces at a
  *     node balance exactly); G^{n+1} is already in stateNew (strainUpdate) and is not touched here.
  *   - heat: E gains dt/m heatRate(i, 0); J^{n+1} = (J^n + dt/m heatRate(i, 1..D)) / (1 + dt rho0 theta^n /
- *     (tau2 rho^{n+1} theta0)) (gpr.md 2.3: explicit fluxes, implicit relaxation). */
+ *     (tau2 rho^{n+1} theta0)) (gpr.md 2.3: explicit fluxes, implicit relaxation).
+ *  If geomNew is given, the geometry of the new positions is stored there for owned cells. */
 template <int D, class P = PhysicsHydro>
 UpdateCheck updateCells(const MeshView<D>& mesh, const ConstField& state, const ConstField& aux,
                         const CellGeometry& geom, const View<const double*>& mass, const View<const int*>& cellMaterial,
                         const View<const Material*>& materials, const ConstField& x, const ConstField& xNew,
                         const ConstField& vnode, double dt, const Field& stateNew,
-                        const ConstField& stress = ConstField(), const ConstField& heatRate = ConstField())
+                        const ConstField& stress = ConstField(), const ConstField& heatRate = ConstField(),
+                        const CellGeometry& geomNew = CellGeometry())
 {
     using S = StateLayout<D, P>;
     constexpr int NV = D + 1;
     auto corner = geom.corner;
     auto volume = geom.volume;
+    const bool storeNew = geomNew.volume.extent(0) > 0;
     auto update = KOKKOS_LAMBDA(const LO i, double (&ext)[4])
     {
         Vec<D> vi;
@@ -464,6 +467,8 @@ UpdateCheck updateCells(const MeshView<D>& mesh, const ConstField& state, const 
             }
         }
         const Simplex<D> sMid(xm), sNew(xn);
+        if (storeNew)
+            storeGeometry<D>(geomNew, i, sNew); // the next step's geometry of owned cells, at no extra cost
         Vec<D> force = Vec<D>::zero();
         double power = 0.0, flux = 0.0;
         for (int k = 0; k < NV; ++k)

@@ -163,6 +163,7 @@ class GprSolver
         if constexpr (P::heat)
             heatRate_ = Field("unilag::heatRate", dm.nOwnedCells, 1 + D);
         geom_ = CellGeometry(dm.nCells, D);
+        geomNew_ = CellGeometry(dm.nCells, D);
         mass_ = View<double*>("unilag::mass", dm.nCells);
         cellMaterial_ = View<int*>("unilag::cellMaterial", dm.nCells);
     }
@@ -393,11 +394,12 @@ class GprSolver
         allSum(comm_, out);
     }
 
-    void refreshGeometry()
+    //! Geometry of local cells [first, nCells) at the current positions.
+    void refreshGeometry(LO first = 0)
     {
         ScopedTimer t(timers_.geometry);
         auto x = x_->getLocalViewDevice(Tpetra::Access::ReadOnly);
-        computeGeometry<D>(m_, x, geom_, m_.nCells);
+        computeGeometry<D>(m_, x, geom_, m_.nCells, first);
     }
 
     int run()
@@ -517,7 +519,7 @@ class GprSolver
                     if constexpr (P::strain)
                         sigma = sigma_->getLocalViewDevice(Tpetra::Access::ReadOnly);
                     check = updateCells<D, P>(m_, s, aux_, geom_, mass_, cellMaterial_, materials_, x, xn, v, dt, sn,
-                                              sigma, heatRate_);
+                                              sigma, heatRate_, geomNew_);
                     double ext[3] = {-check.minVolumeRatio, -check.minSound2, check.maxGclDefect};
                     MPI_Allreduce(MPI_IN_PLACE, ext, 3, MPI_DOUBLE, MPI_MAX, comm_);
                     check.minVolumeRatio = -ext[0];
@@ -572,10 +574,11 @@ class GprSolver
             }
             std::swap(state_, stateNew_);
             std::swap(x_, xNew_);
+            std::swap(geom_, geomNew_); // owned cells: written by the update; ghosts are computed here
             t += dt;
             dtPrev = dt;
             ++step;
-            refreshGeometry();
+            refreshGeometry(m_.nOwnedCells);
             computeAux();
 
             if (t >= nextOutput * (1.0 - 1e-12) && t < tEnd * (1.0 - 1e-14))
@@ -1149,7 +1152,7 @@ class GprSolver
     long picardTotal_ = 0;
     int picardMax_ = 0;
     std::unique_ptr<std::ofstream> steps_;
-    CellGeometry geom_;
+    CellGeometry geom_, geomNew_;
     View<double*> mass_;
     View<int*> cellMaterial_;
     View<const Material*> materials_;
