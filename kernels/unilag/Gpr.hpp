@@ -596,6 +596,30 @@ KOKKOS_INLINE_FUNCTION Sym3 relaxStrain(const Sym3& G, double dt, double tau1)
     return relaxStrainKdt(G, strainRelaxationRate(G, tau1) * dt);
 }
 
+/*! \brief G_e over one step of dG/dt = -(G L + L^T G) - k G dev G with a fixed tau1, given the transport increment
+ *  dT = -dt (G L + L^T G) at G0 (gpr.md 2.4; "exponential in the eigenbasis").
+ *
+ *  Splitting (transport, then the exact relaxation over dt) loses the Navier-Stokes limit: for k dt >> 1 it relaxes
+ *  away the deviator that the stretching rebuilds during the step, so the viscous stress vanishes instead of
+ *  tending to -(tau1/3) dev D rho c_sh^2 (gpr.md 2.4 asymptotics). Near equilibrium G = g (I + X) the deviator obeys
+ *  X' = -a X + F, a = k g, F = dev(dT)/(g dt), whose exact (exponential) solution is
+ *  X(dt) = e^{-a dt} X0 + phi1(a dt) dt F, phi1(z) = (1 - e^{-z}) / z. Hence
+ *    G = R(G0 + tr(dT)/3 I, k dt) + phi1(k g dt) dev(dT),
+ *  with R the exact det-preserving relaxation (relaxStrainKdt): the volumetric transport is never relaxed, the
+ *  initial deviator decays exactly, and the stretching enters with the exponential weight. Limits: tau1 = inf gives
+ *  G0 + dT (pure transport); k dt -> inf gives det^{1/3} I + dev(dT) / (k g dt), the discrete Navier-Stokes
+ *  stress; for k dt -> 0 it agrees with the splitting to O(k dt^2). */
+KOKKOS_INLINE_FUNCTION Sym3 transportAndRelax(const Sym3& G0, const Sym3& dT, double dt, double tau1)
+{
+    const Sym3 Gi = G0 + identity(trace(dT) / 3.0);
+    const double kdt = strainRelaxationRate(Gi, tau1) * dt;
+    if (!(kdt > 0.0))
+        return G0 + dT;
+    const double z = kdt * kmath::cbrt(det(Gi));
+    const double phi1 = z < 1e-8 ? 1.0 - 0.5 * z : -kmath::expm1(-z) / z;
+    return relaxStrainKdt(Gi, kdt) + phi1 * dev(dT);
+}
+
 /*! \brief Plastic strain relaxation over dt with tau1 consistent with the relaxed state (gpr.md 1.4, 2.4):
  *  G = R(G*, kdt), kdt = dt 6 det(G*)^{5/6} / tau1(sigma_bar(rho, G)), tau1 = tau10 (sigma_Y / sigma_bar)^n, where R
  *  is the exact relaxation of relaxStrainKdt. Freezing tau1 at a previous iterate instead makes a Picard loop flip

@@ -348,8 +348,9 @@ struct PicardCheck
 
 /*! \brief One Picard iteration of the implicit G_e update (gpr.md 2.4) for owned cells, from the node velocities
  *  of the last nodal solve: positions x^{l+1} (xNew), rho^{l+1} = m / |T(x^{l+1})|, the velocity gradient
- *  L = (1/|T^n|) sum_r v_r (x) c_r^n, the transport G* = G^n - dt (G^n L + L^T G^n) (explicit in G^n), the stiff
- *  relaxation over dt (exact, det-preserving: relaxStrain / relaxPlasticStrain), and sigma^{l+1} = sigma(rho^{l+1}, G^{l+1}).
+ *  L = (1/|T^n|) sum_r v_r (x) c_r^n, the transport increment dT = -dt (G^n L + L^T G^n) (explicit in G^n), the
+ *  stiff relaxation over dt (transportAndRelax: exponential, with the Navier-Stokes limit; the plastic law relaxes
+ *  G^n + dT with tau1 consistent with the result, relaxPlasticStrain), and sigma^{l+1} = sigma(rho^{l+1}, G^{l+1}).
  *  Writes G^{l+1} into stateNew and sigma^{l+1} into sigmaNew; sigmaOld is the iterate the nodal solve used.
  *  plasticHint (plastic variant, one per cell, NaN = none) carries each cell's plastic-flow parameter between calls. */
 template <int D, class P>
@@ -391,14 +392,14 @@ PicardCheck strainUpdate(const MeshView<D>& mesh, const ConstField& state, const
                     for (int b = 0; b < D; ++b)
                         L.a[a][b] += vnode(r, a) * corner(i, k * D + b) * inv;
             }
-            const gpr::Sym3 Gs = G0 - dt * gpr::transportRate(G0, L);
+            const gpr::Sym3 dT = (-dt) * gpr::transportRate(G0, L);
             gpr::Sym3 G;
             if constexpr (P::plastic)
                 G = m.strainLaw == StrainPlastic
-                        ? gpr::relaxPlasticStrain(Gs, rho, m.csh, dt, m.tau10, m.sigmaY, m.exponent, &plasticHint(i))
-                        : gpr::relaxStrain(Gs, dt, m.tau1);
+                        ? gpr::relaxPlasticStrain(G0 + dT, rho, m.csh, dt, m.tau10, m.sigmaY, m.exponent, &plasticHint(i))
+                        : gpr::transportAndRelax(G0, dT, dt, m.tau1);
             else
-                G = gpr::relaxStrain(Gs, dt, m.tau1);
+                G = gpr::transportAndRelax(G0, dT, dt, m.tau1);
             const gpr::Sym3 sigma = gpr::shearStress(rho, m.csh, G);
             storeSym3(stateNew, i, S::G, G);
             storeSym3(sigmaNew, i, 0, sigma);

@@ -618,6 +618,33 @@ TEST(GprPlastic, CostPerCall)
     EXPECT_GT(ratio, 1.0);
 }
 
+// Transport and relaxation together (exponential integrator): elastic, Navier-Stokes and splitting limits.
+TEST(GprStrain, TransportAndRelaxLimits)
+{
+    const Sym3 G0 = relaxSamples()[6]; // simple shear 0.5
+    const Sym3 D{0.3, -0.1, -0.2, 0.25, 0.05, -0.15}; // a traceless rate of deformation
+    const double dt = 1e-3;
+    const Sym3 dT = (-2.0 * dt) * D; // -dt (G L + L^T G) for G = I, L = D
+    // elastic: pure transport
+    EXPECT_LE(std::sqrt(norm2(transportAndRelax(G0, dT, dt, infinity()) - (G0 + dT))), 1e-15);
+    // Navier-Stokes: k dt = 6 dt / tau1 >> 1 from G = I: dev G -> -(tau1 / 3) dev D (first order in tau1 / dt)
+    for (double tau1 : {1e-6, 1e-9, 1e-12})
+    {
+        const Sym3 G = transportAndRelax(identity(1.0), dT, dt, tau1);
+        const Sym3 expect = (-tau1 / 3.0) * dev(D);
+        EXPECT_LE(std::sqrt(norm2(dev(G) - expect)), 1e-3 * std::sqrt(norm2(expect))) << tau1;
+    }
+    // the hydrodynamic limit: the deviator is negligible
+    EXPECT_LE(std::sqrt(norm2(dev(transportAndRelax(G0, dT, dt, 1e-14)))), 1e-10);
+    // small k dt: agrees with transport-then-relax to O(k dt^2)
+    for (double tau1 : {1.0, 10.0})
+    {
+        const double kdt = strainRelaxationRate(G0, tau1) * dt;
+        const Sym3 split = relaxStrain(G0 + dT, dt, tau1);
+        EXPECT_LE(std::sqrt(norm2(transportAndRelax(G0, dT, dt, tau1) - split)), 2.0 * kdt * std::sqrt(norm2(dT))) << tau1;
+    }
+}
+
 // ---- heat ----
 
 TEST(GprHeat, RelaxationFactorLimits)
