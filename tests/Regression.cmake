@@ -64,6 +64,23 @@ add_test(NAME error_missing_mesh COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}
          -- ${UNILAG} run ${INPUTS}/sedov2d.yaml --set mesh.geometry=nowhere.geo)
 add_test(NAME error_mpi_unknown_key COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err6 "key 'time.max_stpes'"
          -- ${MPI_RUN} 2 ${UNILAG} run ${SCENES}/unknown_key.yaml)
+# Bad physical input of the GPR model: the scene reader names the key before the solver starts.
+add_test(NAME error_gamma COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err_gamma
+         "error_gamma.yaml: key 'materials.gas.gamma': an ideal gas needs gamma > 1" -- ${UNILAG} run ${SCENES}/error_gamma.yaml)
+add_test(NAME error_negative_csh COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err_csh
+         "error_negative_csh.yaml: key 'materials.gas.shear_sound_speed': must be a non-negative number"
+         -- ${UNILAG} run ${SCENES}/error_negative_csh.yaml)
+add_test(NAME error_negative_tau COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err_tau
+         "error_negative_tau.yaml: key 'materials.gas.strain_relaxation.tau1': must be a positive number"
+         -- ${UNILAG} run ${SCENES}/error_negative_tau.yaml)
+add_test(NAME error_unknown_eos COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err_eos
+         "error_unknown_eos.yaml: key 'materials.gas.eos': 'ideal_gaz' is not one of: .*did you mean 'ideal_gas'"
+         -- ${UNILAG} run ${SCENES}/error_unknown_eos.yaml)
+add_test(NAME error_unknown_law COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err_law
+         "error_unknown_law.yaml: key 'materials.gas.strain_relaxation.law': 'plastik' is not one of: .*did you mean 'plastic'"
+         -- ${UNILAG} run ${SCENES}/error_unknown_law.yaml)
+set_tests_properties(error_gamma error_negative_csh error_negative_tau error_unknown_eos error_unknown_law
+                     PROPERTIES LABELS regression)
 # A run that goes unstable stops with a diagnosis (exit 4) and never writes NaNs.
 add_test(NAME unstable_diagnosis COMMAND bash ${SCRIPTS}/expect_unstable.sh ${WORK}/unstable
          -- ${UNILAG} run ${SCENES}/piston_collapse.yaml --quiet)

@@ -5,6 +5,7 @@
 #include <filesystem>
 #include <fstream>
 #include <functional>
+#include <limits>
 #include <set>
 #include <sstream>
 
@@ -33,6 +34,14 @@ std::size_t editDistance(const std::string& a, const std::string& b)
         std::swap(prev, cur);
     }
     return prev[b.size()];
+}
+
+//! A number for a message: shortest of fixed and scientific (1e-14 stays readable, unlike std::to_string).
+std::string num(double v)
+{
+    std::ostringstream os;
+    os << v;
+    return os.str();
 }
 
 bool parseNumber(const std::string& s, double& out)
@@ -126,7 +135,7 @@ class Node
     {
         const double v = number(key, def, required);
         if (!(v > 0.0) || !std::isfinite(v))
-            fail(key, "must be a positive number, found " + std::to_string(v));
+            fail(key, "must be a positive number, found " + num(v));
         return v;
     }
 
@@ -134,7 +143,7 @@ class Node
     {
         const double v = number(key, def);
         if (!(v >= 0.0) || !std::isfinite(v))
-            fail(key, "must be a non-negative number, found " + std::to_string(v));
+            fail(key, "must be a non-negative number, found " + num(v));
         return v;
     }
 
@@ -191,7 +200,18 @@ class Node
             std::string list;
             for (const auto& a : allowed)
                 list += (list.empty() ? "" : ", ") + a;
-            fail(key, "'" + v + "' is not one of: " + list);
+            std::string best;
+            std::size_t bestD = std::max<std::size_t>(3, v.size() / 3 + 1);
+            for (const auto& a : allowed)
+            {
+                const std::size_t d = editDistance(v, a);
+                if (d < bestD)
+                {
+                    bestD = d;
+                    best = a;
+                }
+            }
+            fail(key, "'" + v + "' is not one of: " + list + (best.empty() ? "" : " (did you mean '" + best + "'?)"));
         }
         return v;
     }
@@ -389,6 +409,122 @@ void applyOverride(ParameterList& root, const std::string& file, const std::stri
         list->set(key, d);
 }
 
+//! Strain relaxation laws (gpr.md 1.4) and the keys of strain_relaxation each one takes besides 'law'.
+const std::vector<std::pair<std::string, std::vector<std::string>>> kStrainLaws = {
+    {"fluid", {}}, {"viscous", {"viscosity"}}, {"elastic", {}}, {"constant", {"tau1"}},
+    {"plastic", {"tau10", "yield_stress", "exponent"}}};
+
+/*! \brief strain_relaxation of a material (gpr.md 1.4): the law, its parameters and tau1.
+ *  Needs spec.rho0 and spec.shearSpeed. */
+void readStrainRelaxation(Node& m, MaterialSpec& spec)
+{
+    const bool given = m.has("strain_relaxation");
+    Node st = m.sub("strain_relaxation");
+    std::vector<std::string> laws;
+    for (const auto& law : kStrainLaws)
+        laws.push_back(law.first);
+    spec.strainLaw = st.choice("law", "fluid", laws, given);
+    // a parameter of another law is a mistake (e.g. viscosity with law plastic), not an unknown key
+    for (const auto& [law, keys] : kStrainLaws)
+        for (const auto& k : keys)
+            if (law != spec.strainLaw && st.has(k))
+                st.fail(k, "belongs to law '" + law + "', not to law '" + spec.strainLaw + "' (key '" +
+                               st.join("law") + "')");
+
+    if (spec.strainLaw == "fluid")
+    {
+        if (spec.shearSpeed != 0.0)
+            m.fail("shear_sound_speed",
+                   "an ideal fluid (strain_relaxation law 'fluid', the default) has no shear stiffness, found " +
+                       num(spec.shearSpeed) +
+                       "; for the hydrodynamic limit of GPR give 'strain_relaxation: {law: constant, tau1: 1e-14}'");
+        spec.tau1 = 0.0;
+    }
+    else if (!(spec.shearSpeed > 0.0))
+        m.fail("shear_sound_speed", "strain relaxation law '" + spec.strainLaw + "' needs a shear sound speed > 0, found " +
+                                        num(spec.shearSpeed));
+
+    if (spec.strainLaw == "viscous")
+    {
+        spec.viscosity = st.positive("viscosity", 0.0, true);
+        spec.tau1 = 6.0 * spec.viscosity / (spec.rho0 * spec.shearSpeed * spec.shearSpeed); // gpr.md 1.4
+    }
+    else if (spec.strainLaw == "elastic")
+        spec.tau1 = std::numeric_limits<double>::infinity();
+    else if (spec.strainLaw == "constant")
+        spec.tau1 = st.positive("tau1", 0.0, true);
+    else if (spec.strainLaw == "plastic")
+    {
+        spec.tau10 = st.positive("tau10", 0.0, true);
+        spec.yieldStress = st.positive("yield_stress", 0.0, true);
+        spec.exponent = st.positive("exponent", 0.0, true);
+    }
+    st.rejectUnknown();
+}
+
+//! heat_conduction of a material (gpr.md 1.2, 1.4): alpha, theta0 and one of kappa, tau2. Needs spec.rho0.
+void readHeatConduction(Node& m, MaterialSpec& spec)
+{
+    spec.heatConduction = m.has("heat_conduction");
+    Node h = m.sub("heat_conduction");
+    if (!spec.heatConduction)
+        return;
+    spec.alpha = h.positive("alpha", 0.0, true);
+    spec.theta0 = h.positive("reference_temperature", 0.0, true);
+    const bool kappa = h.has("kappa"), tau2 = h.has("tau2");
+    if (kappa == tau2)
+        h.fail("kappa", std::string(kappa ? "given together with 'tau2'" : "missing") +
+                            ": give exactly one of 'kappa' (Fourier conductivity) and 'tau2' (relaxation time)");
+    // kappa = tau2 alpha^2 theta0 / rho0 (gpr.md 1.2)
+    const double scale = spec.alpha * spec.alpha * spec.theta0 / spec.rho0;
+    if (kappa)
+    {
+        spec.kappa = h.positive("kappa", 0.0, true);
+        spec.tau2 = spec.kappa / scale;
+    }
+    else
+    {
+        spec.tau2 = h.positive("tau2", 0.0, true);
+        spec.kappa = spec.tau2 * scale;
+    }
+    if (!(spec.tau2 > 0.0) || !std::isfinite(spec.tau2) || !(spec.kappa > 0.0) || !std::isfinite(spec.kappa))
+        h.fail(kappa ? "kappa" : "tau2", "gives kappa = " + num(spec.kappa) + " and tau2 = " + num(spec.tau2) +
+                                             ", both must be positive and finite");
+    h.rejectUnknown();
+}
+
+//! One entry of 'materials'.
+MaterialSpec readMaterial(Node& m)
+{
+    MaterialSpec spec;
+    spec.eos = m.choice("eos", "", {"ideal_gas", "mie_gruneisen", "neo_hookean"}, true);
+    spec.cv = m.positive("cv", 1.0);
+    if (spec.eos == "ideal_gas")
+    {
+        spec.gamma = m.number("gamma", 1.4);
+        if (!(spec.gamma > 1.0) || !std::isfinite(spec.gamma))
+            m.fail("gamma", "an ideal gas needs gamma > 1, found " + num(spec.gamma));
+        spec.rho0 = m.positive("rho0", 1.0);
+    }
+    else if (spec.eos == "mie_gruneisen")
+    {
+        spec.rho0 = m.positive("rho0", 0.0, true);
+        spec.c0 = m.positive("c0", 0.0, true);
+        spec.Gamma0 = m.positive("Gamma0", 0.0, true);
+        spec.s = m.nonNegative("s", 0.0);
+    }
+    else
+    {
+        spec.rho0 = m.positive("rho0", 0.0, true);
+        spec.csh = m.positive("csh", 0.0, true);
+    }
+    spec.shearSpeed = m.nonNegative("shear_sound_speed", 0.0);
+    readStrainRelaxation(m, spec);
+    readHeatConduction(m, spec);
+    m.rejectUnknown();
+    return spec;
+}
+
 } // namespace
 
 Scene readScene(const std::string& file, const std::vector<std::string>& overrides)
@@ -442,28 +578,7 @@ Scene readScene(const std::string& file, const std::vector<std::string>& overrid
         for (const auto& name : mats.keys())
         {
             Node m = mats.sub(name);
-            MaterialSpec spec;
-            spec.eos = m.choice("eos", "", {"ideal_gas", "mie_gruneisen", "neo_hookean"}, true);
-            spec.cv = m.positive("cv", 1.0);
-            if (spec.eos == "ideal_gas")
-            {
-                spec.gamma = m.number("gamma", 1.4);
-                if (!(spec.gamma > 1.0))
-                    m.fail("gamma", "an ideal gas needs gamma > 1, found " + std::to_string(spec.gamma));
-            }
-            else if (spec.eos == "mie_gruneisen")
-            {
-                spec.rho0 = m.positive("rho0", 0.0, true);
-                spec.c0 = m.positive("c0", 0.0, true);
-                spec.Gamma0 = m.positive("Gamma0", 0.0, true);
-                spec.s = m.nonNegative("s", 0.0);
-            }
-            else
-            {
-                spec.rho0 = m.positive("rho0", 0.0, true);
-                spec.csh = m.positive("csh", 0.0, true);
-            }
-            m.rejectUnknown();
+            const MaterialSpec spec = readMaterial(m);
             s.materials[name] = spec;
         }
         if (s.materials.empty())
@@ -480,7 +595,7 @@ Scene readScene(const std::string& file, const std::vector<std::string>& overrid
                 r.fail("material", "unknown material '" + spec.material + "' (not in 'materials')");
             spec.density = r.expression("density", true);
             if (spec.density.isConstant() && !(spec.density.value > 0.0))
-                r.fail("density", "must be positive, found " + std::to_string(spec.density.value));
+                r.fail("density", "must be positive, found " + num(spec.density.value));
             const bool p = r.has("pressure"), e = r.has("specific_internal_energy");
             if (p == e)
                 r.fail("pressure", "give exactly one of 'pressure' and 'specific_internal_energy'");
@@ -511,7 +626,13 @@ Scene readScene(const std::string& file, const std::vector<std::string>& overrid
         {
             Node b = bcs.sub(name);
             BoundarySpec spec;
-            spec.type = b.choice("type", "", {"free", "slip_wall", "symmetry", "velocity", "pressure"}, true);
+            spec.type =
+                b.choice("type", "", {"free", "slip_wall", "symmetry", "velocity", "pressure", "traction"}, true);
+            // the value key of each type is its name; a value key of another type is a mistake
+            for (const char* other : {"velocity", "pressure", "traction"})
+                if (spec.type != other && b.has(other))
+                    b.fail(other, std::string("only a boundary of type '") + other + "' takes '" + other +
+                                      "', this one is '" + spec.type + "'");
             if (spec.type == "velocity")
             {
                 auto v = b.vector("velocity", true);
@@ -520,6 +641,22 @@ Scene readScene(const std::string& file, const std::vector<std::string>& overrid
             }
             if (spec.type == "pressure")
                 spec.pressure = b.expression("pressure", true);
+            if (spec.type == "traction")
+            {
+                auto v = b.vector("traction", true);
+                if (v.size() < 2)
+                    b.fail("traction", "expected a traction vector of 2 or 3 numbers, found " + std::to_string(v.size()));
+                for (std::size_t d = 0; d < v.size(); ++d)
+                    if (!std::isfinite(v[d]))
+                        b.fail("traction", "must be finite");
+                for (std::size_t d = 0; d < v.size(); ++d)
+                    spec.traction[d] = v[d];
+            }
+            spec.thermal = b.choice("thermal", "adiabatic", {"adiabatic", "isothermal"});
+            if (spec.thermal == "isothermal")
+                spec.temperature = b.positive("temperature", 0.0, true);
+            else if (b.has("temperature"))
+                b.fail("temperature", "only an isothermal boundary takes a temperature (give 'thermal: isothermal')");
             b.rejectUnknown();
             s.boundaries[name] = spec;
         }
@@ -539,7 +676,7 @@ Scene readScene(const std::string& file, const std::vector<std::string>& overrid
         s.endTime = t.positive("end", 0.0, true);
         s.cfl = t.positive("cfl", s.cfl);
         if (s.cfl > 1.0)
-            t.fail("cfl", "must be in (0, 1], found " + std::to_string(s.cfl));
+            t.fail("cfl", "must be in (0, 1], found " + num(s.cfl));
         s.maxVolumeChange = t.positive("max_volume_change", s.maxVolumeChange);
         s.initialTimeStep = t.nonNegative("initial_dt", 0.0);
         s.maxGrowth = t.positive("max_growth", s.maxGrowth);
@@ -548,6 +685,12 @@ Scene readScene(const std::string& file, const std::vector<std::string>& overrid
         s.maxSteps = t.integer("max_steps", s.maxSteps, 1, 2000000000L);
         s.maxRetries = int(t.integer("max_retries", s.maxRetries, 0, 60));
         t.rejectUnknown();
+    }
+    {
+        Node sch = root.sub("scheme");
+        s.picardTolerance = sch.positive("picard_tolerance", s.picardTolerance);
+        s.picardMaxIterations = int(sch.integer("picard_max_iterations", s.picardMaxIterations, 1, 1000000));
+        sch.rejectUnknown();
     }
     {
         Node o = root.sub("output");

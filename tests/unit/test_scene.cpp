@@ -66,6 +66,40 @@ unilag:
     return replaced(replaced(text, "@GEOMETRY@", kGeometry), "@TABLE@", kTable);
 }
 
+/*! sedovScene() with the material 'gas' given by `block`: its keys, one per line, indented by 6 spaces. The
+ *  region still uses 'gas'; other materials can follow in the block at 4 spaces. */
+std::string withMaterial(const std::string& block)
+{
+    return replaced(sedovScene(), "    gas: { eos: ideal_gas, gamma: 1.4 }\n", "    gas:\n" + block);
+}
+
+//! A beryllium-like elastoplastic solid (gpr.md 3.6) as the material 'gas'.
+const std::string kPlastic = R"(      eos: mie_gruneisen
+      rho0: 1845
+      c0: 8000
+      Gamma0: 1.11
+      s: 1.124
+      cv: 1825
+      shear_sound_speed: 9070
+      strain_relaxation:
+        law: plastic
+        tau10: 1.0
+        yield_stress: 3.3e8
+        exponent: 20
+)";
+
+//! An ideal gas with the GPR hydrodynamic limit and heat conduction (gpr.md 3.5) as the material 'gas'.
+const std::string kHeat = R"(      eos: ideal_gas
+      gamma: 1.4
+      cv: 2.5
+      shear_sound_speed: 1.0
+      strain_relaxation: { law: constant, tau1: 1e-14 }
+      heat_conduction:
+        alpha: 2.0
+        kappa: 1e-2
+        reference_temperature: 1
+)";
+
 //! A fresh directory under the system temp folder for the current test, removed afterwards.
 class TempDir
 {
@@ -228,6 +262,152 @@ TEST(Scene, SetOverridesValues)
     EXPECT_PRED2(contains, bad, "time.ennd");
     const std::string range = inputError([&] { unilag::readScene(file, {"time.cfl=2.0"}); });
     EXPECT_PRED2(contains, range, "time.cfl");
+}
+
+TEST(Scene, GprDefaultsAreAnIdealFluid)
+{
+    TempDir dir;
+    const unilag::Scene s = unilag::readScene(dir.write("scene.yaml", sedovScene()), {});
+    const auto& gas = s.materials.at("gas");
+    EXPECT_DOUBLE_EQ(gas.rho0, 1.0); // reference density of an ideal gas
+    EXPECT_DOUBLE_EQ(gas.shearSpeed, 0.0);
+    EXPECT_EQ(gas.strainLaw, "fluid");
+    EXPECT_DOUBLE_EQ(gas.tau1, 0.0);
+    EXPECT_FALSE(gas.heatConduction);
+    const auto& outer = s.boundaries.at("outer");
+    EXPECT_EQ(outer.thermal, "adiabatic");
+    EXPECT_DOUBLE_EQ(outer.temperature, 0.0);
+    EXPECT_DOUBLE_EQ(s.picardTolerance, 1e-10);
+    EXPECT_EQ(s.picardMaxIterations, 50);
+}
+
+TEST(Scene, ReadsPlasticMaterial)
+{
+    TempDir dir;
+    const unilag::Scene s = unilag::readScene(dir.write("scene.yaml", withMaterial(kPlastic)), {});
+    const auto& be = s.materials.at("gas");
+    EXPECT_EQ(be.eos, "mie_gruneisen");
+    EXPECT_DOUBLE_EQ(be.rho0, 1845.0);
+    EXPECT_DOUBLE_EQ(be.shearSpeed, 9070.0);
+    EXPECT_EQ(be.strainLaw, "plastic");
+    EXPECT_DOUBLE_EQ(be.tau10, 1.0);
+    EXPECT_DOUBLE_EQ(be.yieldStress, 3.3e8);
+    EXPECT_DOUBLE_EQ(be.exponent, 20.0);
+    EXPECT_FALSE(be.heatConduction);
+}
+
+TEST(Scene, StrainLawsGiveTau1)
+{
+    TempDir dir;
+    const std::string solids = R"(      eos: ideal_gas
+    water:
+      eos: ideal_gas
+      rho0: 1000
+      shear_sound_speed: 10
+      strain_relaxation: { law: viscous, viscosity: 0.02 }
+    steel:
+      eos: neo_hookean
+      rho0: 7800
+      csh: 3000
+      shear_sound_speed: 3000
+      strain_relaxation: { law: elastic }
+    hydro:
+      eos: ideal_gas
+      shear_sound_speed: 1
+      strain_relaxation: { law: constant, tau1: 1e-14 }
+    stiff:
+      eos: ideal_gas
+      shear_sound_speed: 1
+      strain_relaxation: { law: constant, tau1: 1e14 }
+)";
+    const unilag::Scene s = unilag::readScene(dir.write("scene.yaml", withMaterial(solids)), {});
+    const auto& water = s.materials.at("water");
+    EXPECT_EQ(water.strainLaw, "viscous");
+    EXPECT_DOUBLE_EQ(water.viscosity, 0.02);
+    EXPECT_DOUBLE_EQ(water.tau1, 6.0 * 0.02 / (1000.0 * 10.0 * 10.0)); // tau1 = 6 mu / (rho0 c_sh^2)
+    const auto& steel = s.materials.at("steel");
+    EXPECT_EQ(steel.strainLaw, "elastic");
+    EXPECT_TRUE(std::isinf(steel.tau1) && steel.tau1 > 0.0);
+    EXPECT_DOUBLE_EQ(s.materials.at("hydro").tau1, 1e-14);
+    EXPECT_DOUBLE_EQ(s.materials.at("stiff").tau1, 1e14);
+    EXPECT_EQ(s.materials.at("gas").strainLaw, "fluid");
+}
+
+TEST(Scene, HeatConductionKappaAndTau2)
+{
+    TempDir dir;
+    // kappa given: tau2 = kappa rho0 / (alpha^2 theta0), rho0 = 1 by default for an ideal gas
+    unilag::Scene s = unilag::readScene(dir.write("scene.yaml", withMaterial(kHeat)), {});
+    const auto& gas = s.materials.at("gas");
+    EXPECT_TRUE(gas.heatConduction);
+    EXPECT_DOUBLE_EQ(gas.alpha, 2.0);
+    EXPECT_DOUBLE_EQ(gas.theta0, 1.0);
+    EXPECT_DOUBLE_EQ(gas.kappa, 1e-2);
+    EXPECT_DOUBLE_EQ(gas.tau2, 1e-2 * 1.0 / (2.0 * 2.0 * 1.0));
+    EXPECT_DOUBLE_EQ(gas.cv, 2.5);
+    EXPECT_EQ(gas.strainLaw, "constant");
+    EXPECT_DOUBLE_EQ(gas.tau1, 1e-14);
+
+    // tau2 given (and rho0, theta0 not 1): kappa = tau2 alpha^2 theta0 / rho0
+    std::string text = replaced(withMaterial(kHeat), "kappa: 1e-2", "tau2: 0.5");
+    text = replaced(text, "reference_temperature: 1", "reference_temperature: 300");
+    text = replaced(text, "gamma: 1.4", "gamma: 1.4\n      rho0: 2.0");
+    s = unilag::readScene(dir.write("scene.yaml", text), {});
+    const auto& hot = s.materials.at("gas");
+    EXPECT_DOUBLE_EQ(hot.rho0, 2.0);
+    EXPECT_DOUBLE_EQ(hot.tau2, 0.5);
+    EXPECT_DOUBLE_EQ(hot.kappa, 0.5 * 2.0 * 2.0 * 300.0 / 2.0);
+}
+
+TEST(Scene, TractionThermalBoundariesAndScheme)
+{
+    TempDir dir;
+    std::string text = replaced(sedovScene(), "outer: { type: slip_wall }", "outer: { type: traction, traction: [0, -1e5] }");
+    text = replaced(text, "axis_x: { type: symmetry }", "axis_x: { type: slip_wall, thermal: isothermal, temperature: 300 }");
+    text = replaced(text, "  time: {", "  scheme: { picard_tolerance: 1e-8, picard_max_iterations: 20 }\n  time: {");
+    const unilag::Scene s = unilag::readScene(dir.write("scene.yaml", text), {});
+    const auto& outer = s.boundaries.at("outer");
+    EXPECT_EQ(outer.type, "traction");
+    EXPECT_DOUBLE_EQ(outer.traction[0], 0.0);
+    EXPECT_DOUBLE_EQ(outer.traction[1], -1e5);
+    EXPECT_DOUBLE_EQ(outer.traction[2], 0.0);
+    EXPECT_EQ(outer.thermal, "adiabatic");
+    const auto& wall = s.boundaries.at("axis_x");
+    EXPECT_EQ(wall.type, "slip_wall");
+    EXPECT_EQ(wall.thermal, "isothermal");
+    EXPECT_DOUBLE_EQ(wall.temperature, 300.0);
+    EXPECT_DOUBLE_EQ(s.picardTolerance, 1e-8);
+    EXPECT_EQ(s.picardMaxIterations, 20);
+
+    // --set reaches the new keys
+    const unilag::Scene o = unilag::readScene(dir.write("scene.yaml", text), {"scheme.picard_max_iterations=7"});
+    EXPECT_EQ(o.picardMaxIterations, 7);
+}
+
+TEST(Scene, ResolvedGprSceneReadsBack)
+{
+    TempDir dir;
+    std::string text = withMaterial(kPlastic + "    air:\n" + kHeat);
+    text = replaced(text, "outer: { type: slip_wall }", "outer: { type: traction, traction: [1.5, -1e5] }");
+    text = replaced(text, "  time: {", "  scheme: { picard_max_iterations: 20 }\n  time: {");
+    const unilag::Scene s = unilag::readScene(dir.write("scene.yaml", text), {"scheme.picard_tolerance=1e-9"});
+    const std::string resolved = (dir.path() / "resolved.yaml").string();
+    unilag::writeScene(s, resolved);
+    const unilag::Scene r = unilag::readScene(resolved, {});
+    for (const auto* name : {"gas", "air"})
+    {
+        const auto& a = s.materials.at(name);
+        const auto& b = r.materials.at(name);
+        EXPECT_EQ(a.strainLaw, b.strainLaw) << name;
+        EXPECT_DOUBLE_EQ(a.shearSpeed, b.shearSpeed) << name;
+        EXPECT_DOUBLE_EQ(a.tau1, b.tau1) << name;
+        EXPECT_DOUBLE_EQ(a.yieldStress, b.yieldStress) << name;
+        EXPECT_EQ(a.heatConduction, b.heatConduction) << name;
+        EXPECT_DOUBLE_EQ(a.tau2, b.tau2) << name;
+    }
+    EXPECT_DOUBLE_EQ(r.boundaries.at("outer").traction[1], -1e5);
+    EXPECT_DOUBLE_EQ(r.picardTolerance, 1e-9);
+    EXPECT_EQ(r.picardMaxIterations, 20);
 }
 
 // ---- invalid scenes: InputError naming the file and the key ----
@@ -419,4 +599,157 @@ TEST(MeshLoad, BoundaryWithoutGroupIsRejected)
     const std::string msg = meshError(dir, squareMsh("1 2 3", "1 3 4", {"1 2", "2 3", "3 4"}));
     EXPECT_PRED2(contains, msg, "no boundary physical group");
     EXPECT_PRED2(contains, msg, "element 6"); // the edge 4-1 belongs to triangle 6
+}
+
+// ---- invalid GPR input ----
+
+TEST(SceneErrors, BadEosParameters)
+{
+    TempDir dir;
+    std::string msg = sceneError(dir, replaced(sedovScene(), "gamma: 1.4", "gamma: 0.9"), "materials.gas.gamma");
+    EXPECT_PRED2(contains, msg, "gamma > 1");
+    msg = sceneError(dir, replaced(sedovScene(), "gamma: 1.4", "gamma: 1.4, rho0: 0"), "materials.gas.rho0");
+    EXPECT_PRED2(contains, msg, "positive");
+    msg = sceneError(dir, replaced(withMaterial(kPlastic), "rho0: 1845", "rho0: -1845"), "materials.gas.rho0");
+    EXPECT_PRED2(contains, msg, "positive");
+    // a misspelt eos: the allowed values and the nearest one
+    msg = sceneError(dir, replaced(sedovScene(), "eos: ideal_gas", "eos: mie_grunesen"), "materials.gas.eos");
+    EXPECT_PRED2(contains, msg, "ideal_gas, mie_gruneisen, neo_hookean");
+    EXPECT_PRED2(contains, msg, "did you mean 'mie_gruneisen'");
+}
+
+TEST(SceneErrors, ShearSoundSpeed)
+{
+    TempDir dir;
+    std::string msg = sceneError(dir, replaced(withMaterial(kPlastic), "shear_sound_speed: 9070", "shear_sound_speed: -1"),
+                                 "materials.gas.shear_sound_speed");
+    EXPECT_PRED2(contains, msg, "non-negative");
+    // a law with shear stress needs c_sh > 0
+    msg = sceneError(dir, replaced(withMaterial(kPlastic), "      shear_sound_speed: 9070\n", ""),
+                     "materials.gas.shear_sound_speed");
+    EXPECT_PRED2(contains, msg, "'plastic' needs a shear sound speed > 0");
+    // an ideal fluid has none: the message points to the hydrodynamic limit
+    msg = sceneError(dir, replaced(sedovScene(), "gamma: 1.4", "gamma: 1.4, shear_sound_speed: 1.0"),
+                     "materials.gas.shear_sound_speed");
+    EXPECT_PRED2(contains, msg, "no shear stiffness");
+    EXPECT_PRED2(contains, msg, "law: constant, tau1: 1e-14");
+    msg = sceneError(dir, replaced(withMaterial(kHeat), "law: constant, tau1: 1e-14", "law: fluid"),
+                     "materials.gas.shear_sound_speed");
+    EXPECT_PRED2(contains, msg, "no shear stiffness");
+}
+
+TEST(SceneErrors, StrainRelaxationValues)
+{
+    TempDir dir;
+    const std::string prefix = "materials.gas.strain_relaxation.";
+    const std::string heat = withMaterial(kHeat), plastic = withMaterial(kPlastic);
+    for (const auto* bad : {"tau1: -1e-14", "tau1: 0"})
+    {
+        const std::string msg = sceneError(dir, replaced(heat, "tau1: 1e-14", bad), prefix + "tau1");
+        EXPECT_PRED2(contains, msg, "must be a positive number");
+    }
+    sceneError(dir, replaced(plastic, "tau10: 1.0", "tau10: 0"), prefix + "tau10");
+    sceneError(dir, replaced(plastic, "yield_stress: 3.3e8", "yield_stress: -3.3e8"), prefix + "yield_stress");
+    sceneError(dir, replaced(plastic, "exponent: 20", "exponent: -2"), prefix + "exponent");
+    const std::string viscous = replaced(heat, "law: constant, tau1: 1e-14", "law: viscous, viscosity: -0.1");
+    std::string msg = sceneError(dir, viscous, prefix + "viscosity");
+    EXPECT_PRED2(contains, msg, "must be a positive number, found -0.1");
+}
+
+TEST(SceneErrors, StrainRelaxationKeys)
+{
+    TempDir dir;
+    const std::string prefix = "materials.gas.strain_relaxation.";
+    const std::string heat = withMaterial(kHeat), plastic = withMaterial(kPlastic);
+    // unknown law: the allowed values and the nearest one
+    std::string msg = sceneError(dir, replaced(plastic, "law: plastic", "law: plastik"), prefix + "law");
+    EXPECT_PRED2(contains, msg, "fluid, viscous, elastic, constant, plastic");
+    EXPECT_PRED2(contains, msg, "did you mean 'plastic'");
+    // missing law, missing parameters
+    msg = sceneError(dir, replaced(plastic, "        law: plastic\n", ""), prefix + "law");
+    EXPECT_PRED2(contains, msg, "missing");
+    msg = sceneError(dir, replaced(plastic, "        yield_stress: 3.3e8\n", ""), prefix + "yield_stress");
+    EXPECT_PRED2(contains, msg, "missing");
+    msg = sceneError(dir, replaced(heat, "law: constant, tau1: 1e-14", "law: constant"), prefix + "tau1");
+    EXPECT_PRED2(contains, msg, "missing");
+    msg = sceneError(dir, replaced(heat, "law: constant, tau1: 1e-14", "law: viscous"), prefix + "viscosity");
+    EXPECT_PRED2(contains, msg, "missing");
+    // a parameter of another law
+    msg = sceneError(dir, replaced(plastic, "exponent: 20", "exponent: 20\n        viscosity: 0.1"), prefix + "viscosity");
+    EXPECT_PRED2(contains, msg, "belongs to law 'viscous', not to law 'plastic'");
+    msg = sceneError(dir, replaced(heat, "law: constant, tau1: 1e-14", "law: elastic, tau1: 1e14"), prefix + "tau1");
+    EXPECT_PRED2(contains, msg, "belongs to law 'constant'");
+    // a misspelt key
+    msg = sceneError(dir, replaced(plastic, "tau10: 1.0", "tau10: 1.0\n        exponnent: 2"), prefix + "exponnent");
+    EXPECT_PRED2(contains, msg, "did you mean");
+    // not a section
+    sceneError(dir, replaced(heat, "strain_relaxation: { law: constant, tau1: 1e-14 }", "strain_relaxation: plastic"),
+               "materials.gas.strain_relaxation");
+}
+
+TEST(SceneErrors, HeatConduction)
+{
+    TempDir dir;
+    const std::string prefix = "materials.gas.heat_conduction.";
+    const std::string heat = withMaterial(kHeat);
+    sceneError(dir, replaced(heat, "alpha: 2.0", "alpha: 0"), prefix + "alpha");
+    sceneError(dir, replaced(heat, "alpha: 2.0", "alpha: -2.0"), prefix + "alpha");
+    sceneError(dir, replaced(heat, "kappa: 1e-2", "kappa: -1e-2"), prefix + "kappa");
+    sceneError(dir, replaced(heat, "kappa: 1e-2", "tau2: 0"), prefix + "tau2");
+    sceneError(dir, replaced(heat, "reference_temperature: 1", "reference_temperature: 0"),
+               prefix + "reference_temperature");
+    std::string msg = sceneError(dir, replaced(heat, "        alpha: 2.0\n", ""), prefix + "alpha");
+    EXPECT_PRED2(contains, msg, "missing");
+    msg = sceneError(dir, replaced(heat, "        reference_temperature: 1\n", ""), prefix + "reference_temperature");
+    EXPECT_PRED2(contains, msg, "missing");
+    msg = sceneError(dir, replaced(heat, "        kappa: 1e-2\n", ""), prefix + "kappa");
+    EXPECT_PRED2(contains, msg, "exactly one of 'kappa'");
+    msg = sceneError(dir, replaced(heat, "kappa: 1e-2", "kappa: 1e-2\n        tau2: 1e-3"), prefix + "kappa");
+    EXPECT_PRED2(contains, msg, "exactly one of 'kappa'");
+    msg = sceneError(dir, replaced(heat, "cv: 2.5", "cv: 0"), "materials.gas.cv");
+    EXPECT_PRED2(contains, msg, "positive");
+}
+
+TEST(SceneErrors, TractionAndThermalBoundaries)
+{
+    TempDir dir;
+    const std::string prefix = "boundaries.outer.";
+    const std::string traction = replaced(sedovScene(), "outer: { type: slip_wall }", "outer: { type: traction }");
+    std::string msg = sceneError(dir, traction, prefix + "traction");
+    EXPECT_PRED2(contains, msg, "missing");
+    msg = sceneError(dir, replaced(traction, "type: traction", "type: traction, traction: [1.0]"), prefix + "traction");
+    EXPECT_PRED2(contains, msg, "2 or 3 numbers");
+    msg = sceneError(dir, replaced(sedovScene(), "outer: { type: slip_wall }", "outer: { type: slip_wall, traction: [0, 1] }"),
+                     prefix + "traction");
+    EXPECT_PRED2(contains, msg, "only a boundary of type 'traction'");
+    msg = sceneError(dir, replaced(sedovScene(), "outer: { type: slip_wall }", "outer: { type: tracton }"), prefix + "type");
+    EXPECT_PRED2(contains, msg, "did you mean 'traction'");
+
+    const std::string iso = "outer: { type: slip_wall, thermal: isothermal, temperature: 300 }";
+    sceneError(dir, replaced(sedovScene(), "outer: { type: slip_wall }", replaced(iso, "300", "-300")),
+               prefix + "temperature");
+    msg = sceneError(dir, replaced(sedovScene(), "outer: { type: slip_wall }", replaced(iso, ", temperature: 300", "")),
+                     prefix + "temperature");
+    EXPECT_PRED2(contains, msg, "missing");
+    msg = sceneError(dir, replaced(sedovScene(), "outer: { type: slip_wall }", replaced(iso, "isothermal", "adiabatic")),
+                     prefix + "temperature");
+    EXPECT_PRED2(contains, msg, "only an isothermal boundary");
+    msg = sceneError(dir, replaced(sedovScene(), "outer: { type: slip_wall }", replaced(iso, "isothermal", "hot")),
+                     prefix + "thermal");
+    EXPECT_PRED2(contains, msg, "adiabatic, isothermal");
+}
+
+TEST(SceneErrors, SchemeSection)
+{
+    TempDir dir;
+    const std::string scheme =
+        replaced(sedovScene(), "  time: {", "  scheme: { picard_tolerance: 1e-10, picard_max_iterations: 50 }\n  time: {");
+    sceneError(dir, replaced(scheme, "picard_tolerance: 1e-10", "picard_tolerance: 0"), "scheme.picard_tolerance");
+    sceneError(dir, replaced(scheme, "picard_max_iterations: 50", "picard_max_iterations: 0"),
+               "scheme.picard_max_iterations");
+    sceneError(dir, replaced(scheme, "picard_max_iterations: 50", "picard_max_iterations: 2.5"),
+               "scheme.picard_max_iterations");
+    const std::string msg =
+        sceneError(dir, replaced(scheme, "picard_tolerance: 1e-10", "picard_tolerence: 1e-10"), "scheme.picard_tolerence");
+    EXPECT_PRED2(contains, msg, "did you mean 'scheme.picard_tolerance'");
 }
