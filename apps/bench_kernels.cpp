@@ -91,12 +91,12 @@ struct Fixture
         xNew = Field("bench::xNew", nn, D);
         vnode = Field("bench::vnode", nn, D);
         fnode = Field("bench::fnode", dm->nOwnedNodes, D);
-        aux = Field("bench::aux", nc, Aux::ncomp);
+        aux = Field("bench::aux", nc, Aux::ncomp<PhysicsHydro>());
         geom = CellGeometry(nc, D);
         mass = View<double*>("bench::mass", nc);
         cellMaterial = View<int*>("bench::cellMaterial", nc); // zero: one material
         materials = View<Material*>("bench::materials", 1);
-        Kokkos::deep_copy(materials, gpr::idealGasEos(1.4, 1.0));
+        Kokkos::deep_copy(materials, fluidMaterial(gpr::idealGasEos(1.4, 1.0)));
 
         // Every boundary group is a slip wall.
         const int ng = std::max(int(dm->boundaryNames.size()), 1);

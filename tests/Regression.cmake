@@ -102,6 +102,17 @@ else()
   message(WARNING "pvpython not found: the ParaView read-back test is skipped (scripts/setup.sh installs python3-paraview)")
 endif()
 
+# GPR hydrodynamic limit (issue 3): the full model with tau1 = 1e-14 (G_e, Picard loop, exact relaxation, stress in
+# the nodal solver) reproduces the Euler solver's 2D Sedov to 1e-6 in every field. Output only at the end, so that
+# no intermediate output time clips the steps (the c_sh = 1e-6 signal speed differs from c0 by ~1e-10 relative).
+add_test(NAME hydro_limit_euler COMMAND ${UNILAG} run ${INPUTS}/sedov2d.yaml --quiet --set mesh.size=0.0288
+         --set output.interval=0 --output ${WORK}/hydro_limit_euler)
+add_test(NAME hydro_limit_gpr COMMAND ${UNILAG} run ${INPUTS}/sedov2d_gpr.yaml --quiet --check --set mesh.size=0.0288
+         --set output.interval=0 --output ${WORK}/hydro_limit_gpr)
+set_tests_properties(hydro_limit_euler hydro_limit_gpr PROPERTIES FIXTURES_SETUP hydro_limit LABELS "gpr;regression")
+add_test(NAME hydro_limit_agree COMMAND ${PYTHON} ${SCRIPTS}/compare_runs.py 1e-6 ${WORK}/hydro_limit_euler ${WORK}/hydro_limit_gpr)
+set_tests_properties(hydro_limit_agree PROPERTIES FIXTURES_REQUIRED hydro_limit LABELS "gpr;regression")
+
 # Full GPR model (gpr.md 3.4-3.9). The exact-solution code of the two convergence scripts checks itself first.
 add_test(NAME exact_solutions_selftest COMMAND bash -c
          "${PYTHON} ${SCRIPTS}/viscous_shock.py --selftest && ${PYTHON} ${SCRIPTS}/heat_conduction.py --selftest")

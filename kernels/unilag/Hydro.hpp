@@ -1,6 +1,8 @@
 /*! \file Hydro.hpp
- *  \brief First-order cell-centred Lagrangian step in the hydrodynamic limit (T = -p I): EOS, Maire-type
- *  nodal solver with subcell forces, time-step limits, and the conservative cell update with the GCL volume.
+ *  \brief First-order cell-centred Lagrangian step of the GPR model (T = -p I + sigma): EOS and derived cell
+ *  quantities, Maire-type nodal solver with subcell forces, time-step limits, and the conservative cell update
+ *  with the GCL volume. Every kernel is a template on the Physics variant (Physics.hpp): the hydrodynamic one
+ *  compiles to the Euler solver, with no stress, G_e or J work.
  *
  *  Equation numbers refer to gpr.md section 2 (Boscheri, Chiocchetti & Peshkov, JCP 2022):
  *   - subcell matrix  M_ir = z_i sum_{f in F_ri} (s_f/D) n_f n_f = z_i sum_{j != k} c_j c_j^T / |c_j|
@@ -16,68 +18,93 @@
 
 #include "unilag/Geometry.hpp"
 #include "unilag/Gpr.hpp"
+#include "unilag/Physics.hpp"
 #include "unilag/Reduce.hpp"
 
 namespace unilag
 {
 
-//! Column indices of the hydrodynamic state (specific volume, velocity, specific total energy).
-template <int D>
-struct HydroState
+/*! \brief Specific internal energy eps = E - |v|^2/2 - E_e(G) - alpha^2 |J|^2 / 2 (gpr.md 1.2) of a state row whose
+ *  velocity, G_e and J are given (the energy is split the same way everywhere, so the total is what is conserved). */
+template <int D, class P>
+KOKKOS_INLINE_FUNCTION double internalEnergy(const Material& m, double energy, const Vec<D>& v, const gpr::Sym3& G,
+                                             const Vec<D>& J)
 {
-    static constexpr int omega = 0;
-    static constexpr int vel = 1;
-    static constexpr int energy = 1 + D;
-    static constexpr int ncomp = 2 + D;
-};
+    double kin = 0.0;
+    for (int d = 0; d < D; ++d)
+        kin += 0.5 * v[d] * v[d];
+    double eps = energy - kin;
+    if constexpr (P::strain)
+        if (m.strainLaw != StrainNone)
+            eps -= gpr::elasticEnergy(m.csh, G);
+    if constexpr (P::heat)
+        if (m.heat)
+        {
+            double j2 = 0.0;
+            for (int d = 0; d < D; ++d)
+                j2 += J[d] * J[d];
+            eps -= 0.5 * m.alpha * m.alpha * j2;
+        }
+    return eps;
+}
 
-//! Column indices of per-cell quantities derived from the state by the EOS.
-struct Aux
+//! Velocity, G_e and J of a state row (G_e and J only where the variant carries them).
+template <int D, class P, class F>
+KOKKOS_INLINE_FUNCTION void loadKinematics(const F& state, LO i, Vec<D>& v, gpr::Sym3& G, Vec<D>& J)
 {
-    static constexpr int pressure = 0;
-    static constexpr int sound = 1;
-    static constexpr int impedance = 2;
-    static constexpr int ncomp = 3;
-};
+    using S = StateLayout<D, P>;
+    for (int d = 0; d < D; ++d)
+        v[d] = state(i, S::vel + d);
+    if constexpr (P::strain)
+        G = loadSym3(state, i, S::G);
+    else
+        G = gpr::identity(1.0);
+    if constexpr (P::heat)
+        for (int d = 0; d < D; ++d)
+            J[d] = state(i, S::J + d);
+    else
+        J = Vec<D>::zero();
+}
 
-//! Material parameters (plain data, one entry per material, read inside kernels): the EOS of gpr.md 1.3.
-using Material = gpr::EosParams;
-
-enum BcType : int
-{
-    BcFree = 0,     //!< zero traction
-    BcSlipWall = 1, //!< v . n = 0 (also symmetry planes)
-    BcVelocity = 2, //!< imposed velocity vector (piston, clamped)
-    BcPressure = 3  //!< imposed pressure: normal traction -p n (free surface when p = 0)
-};
-
-//! Boundary conditions by boundary group id (the group of a face is MeshView::cellFaceGroup).
-struct BoundaryView
-{
-    View<const int*> type;                        //!< group -> BcType
-    Kokkos::View<const double* [3], MemSpace> value; //!< group -> imposed velocity, or pressure in component 0
-};
-
-//! Derived cell quantities (pressure, sound speed, impedance z = rho c) for cells [0, nCells).
-template <int D>
+/*! \brief Derived cell quantities for cells [0, nCells): pressure, signal speed a = sqrt(c0^2 + 4/3 c_sh^2 + c_h^2),
+ *  impedance z = rho a, internal energy, temperature (heat) and the shear stress sigma(rho, G_e) (strain), which is
+ *  written to `stress` (nCells x 6; ignored by the other variants). */
+template <int D, class P = PhysicsHydro>
 void computeEos(const ConstField& state, const View<const int*>& cellMaterial, const View<const Material*>& materials,
-                const Field& aux, LO nCells)
+                const Field& aux, LO nCells, const Field& stress = Field())
 {
-    using S = HydroState<D>;
+    using S = StateLayout<D, P>;
     auto eos = KOKKOS_LAMBDA(const LO i)
     {
         const double rho = 1.0 / state(i, S::omega);
-        double kin = 0.0;
-        for (int d = 0; d < D; ++d)
-            kin += 0.5 * state(i, S::vel + d) * state(i, S::vel + d);
         const Material& m = materials(cellMaterial(i));
-        const double p = gpr::pressure(m, rho, state(i, S::energy) - kin);
-        const double c = Kokkos::Experimental::sqrt(Kokkos::Experimental::fmax(gpr::soundSpeed2(m, rho, p), 0.0));
+        Vec<D> v, J;
+        gpr::Sym3 G;
+        loadKinematics<D, P>(state, i, v, G, J);
+        const double eps = internalEnergy<D, P>(m, state(i, S::energy), v, G, J);
+        const double p = gpr::pressure(m.eos, rho, eps);
+        double a2 = Kokkos::Experimental::fmax(gpr::soundSpeed2(m.eos, rho, p), 0.0);
+        if constexpr (P::strain)
+        {
+            const bool shear = m.strainLaw != StrainNone;
+            a2 += shear ? (4.0 / 3.0) * m.csh * m.csh : 0.0;
+            storeSym3(stress, i, 0, shear ? gpr::shearStress(rho, m.csh, G) : gpr::Sym3{0, 0, 0, 0, 0, 0});
+        }
+        double theta = 0.0;
+        if constexpr (P::heat)
+        {
+            theta = gpr::temperature(m.eos, rho, eps);
+            if (m.heat)
+                a2 += m.alpha * m.alpha * Kokkos::Experimental::fmax(theta, 0.0) / (m.eos.cv * rho * rho);
+        }
+        const double a = Kokkos::Experimental::sqrt(a2);
         aux(i, Aux::pressure) = p;
-        aux(i, Aux::sound) = c;
-        aux(i, Aux::impedance) = rho * c;
+        aux(i, Aux::sound) = a;
+        aux(i, Aux::impedance) = rho * a;
+        aux(i, Aux::eps) = eps;
+        aux(i, Aux::theta) = theta;
     };
-    Kokkos::parallel_for("unilag::hydro::eos", range(nCells), eos);
+    Kokkos::parallel_for("unilag::gpr::eos", range(nCells), eos);
 }
 
 //! Subcell matrix M_ik of corner k of a cell (without the impedance factor).
@@ -95,13 +122,34 @@ KOKKOS_INLINE_FUNCTION Mat<D> subcellMatrix(const Field& corner, LO i, int k)
     return M;
 }
 
-/*! \brief Nodal solver at owned nodes: node velocity v_r and the net force sum_i f_ri it exerts on the fluid
- *  (non-zero only where a boundary condition acts; used for the momentum and energy balance). */
+/*! \brief Shear-stress part of the traction on a corner: sigma c (the D x D block of the Sym3 stress row). */
 template <int D>
-void nodalSolve(const MeshView<D>& mesh, const BoundaryView& bc, const ConstField& state, const ConstField& aux,
-                const CellGeometry& geom, const Field& vnode, const Field& fnode)
+KOKKOS_INLINE_FUNCTION Vec<D> stressTimes(const ConstField& stress, LO i, const Vec<D>& c)
 {
-    using S = HydroState<D>;
+    const gpr::Sym3 s = loadSym3(stress, i, 0);
+    Vec<D> r;
+    if constexpr (D == 2)
+    {
+        r[0] = s.xx * c[0] + s.xy * c[1];
+        r[1] = s.xy * c[0] + s.yy * c[1];
+    }
+    else
+    {
+        r[0] = s.xx * c[0] + s.xy * c[1] + s.xz * c[2];
+        r[1] = s.xy * c[0] + s.yy * c[1] + s.yz * c[2];
+        r[2] = s.xz * c[0] + s.yz * c[1] + s.zz * c[2];
+    }
+    return r;
+}
+
+/*! \brief Nodal solver at owned nodes: node velocity v_r and the net force sum_i f_ri it exerts on the fluid
+ *  (non-zero only where a boundary condition acts; used for the momentum and energy balance).
+ *  T_i = -p_i I + sigma_i with sigma from `stress` (strain variants; the Picard iterate). */
+template <int D, class P = PhysicsHydro>
+void nodalSolve(const MeshView<D>& mesh, const BoundaryView& bc, const ConstField& state, const ConstField& aux,
+                const CellGeometry& geom, const Field& vnode, const Field& fnode, const ConstField& stress = ConstField())
+{
+    using S = StateLayout<D, P>;
     constexpr int NV = D + 1;
     auto corner = geom.corner;
     auto solve_node = KOKKOS_LAMBDA(const LO r)
@@ -134,6 +182,8 @@ void nodalSolve(const MeshView<D>& mesh, const BoundaryView& bc, const ConstFiel
                 for (int e = 0; e < D; ++e)
                     M.a[a][e] += z * Mik.a[a][e];
             }
+            if constexpr (P::strain)
+                b = b - stressTimes<D>(stress, i, ck);
             for (int j = 0; j < NV; ++j)
             {
                 const int g = (j == k) ? -1 : mesh.cellFaceGroup(i, j);
@@ -146,6 +196,13 @@ void nodalSolve(const MeshView<D>& mesh, const BoundaryView& bc, const ConstFiel
                 {
                     // t_ext = -p n on face j, whose outward area vector is -D c_j: (s_f / D) t_ext = p c_j
                     bext = bext + bc.value(g, 0) * cornerVec<D>(corner, i, j);
+                }
+                else if (t == BcTraction)
+                {
+                    // (s_f / D) t_ext with s_f = D |c_j|
+                    const double w = norm(cornerVec<D>(corner, i, j));
+                    for (int d = 0; d < D; ++d)
+                        bext[d] += w * bc.value(g, d);
                 }
                 else if (t == BcSlipWall)
                 {
@@ -186,7 +243,7 @@ void nodalSolve(const MeshView<D>& mesh, const BoundaryView& bc, const ConstFiel
         else
         {
             // Orthonormal basis Q of the constrained directions (Gram-Schmidt; parallel walls count once),
-            // then solve (P M P + Q Q^T) v = P b with P = I - Q Q^T, which gives Q^T v = 0 exactly in exact
+            // then solve (Proj M Proj + Q Q^T) v = Proj b with Proj = I - Q Q^T, which gives Q^T v = 0 exactly in exact
             // arithmetic and the Maire wall solution in the free directions.
             Vec<D> Q[D];
             int nq = 0;
@@ -206,11 +263,11 @@ void nodalSolve(const MeshView<D>& mesh, const BoundaryView& bc, const ConstFiel
             }
             else
             {
-                Mat<D> P = Mat<D>::zero();
+                Mat<D> Proj = Mat<D>::zero();
                 for (int a = 0; a < D; ++a)
-                    P.a[a][a] = 1.0;
+                    Proj.a[a][a] = 1.0;
                 for (int s = 0; s < nq; ++s)
-                    P.addOuter(-1.0, Q[s]);
+                    Proj.addOuter(-1.0, Q[s]);
                 Mat<D> A = Mat<D>::zero();
                 for (int a = 0; a < D; ++a)
                     for (int e = 0; e < D; ++e)
@@ -218,12 +275,12 @@ void nodalSolve(const MeshView<D>& mesh, const BoundaryView& bc, const ConstFiel
                         double sum = 0.0;
                         for (int f = 0; f < D; ++f)
                             for (int g = 0; g < D; ++g)
-                                sum += P.a[a][f] * M.a[f][g] * P.a[g][e];
+                                sum += Proj.a[a][f] * M.a[f][g] * Proj.a[g][e];
                         A.a[a][e] = sum;
                     }
                 for (int s = 0; s < nq; ++s)
                     A.addOuter(1.0, Q[s]);
-                v = solve(A, P * (b + bext));
+                v = solve(A, Proj * (b + bext));
                 // remove the round-off normal component so that walls do no work
                 for (int s = 0; s < nq; ++s)
                     v = v - dot(v, Q[s]) * Q[s];
@@ -236,7 +293,7 @@ void nodalSolve(const MeshView<D>& mesh, const BoundaryView& bc, const ConstFiel
             fnode(r, d) = F[d];
         }
     };
-    Kokkos::parallel_for("unilag::hydro::nodal_solve", range(mesh.nOwnedNodes), solve_node);
+    Kokkos::parallel_for("unilag::gpr::nodal_solve", range(mesh.nOwnedNodes), solve_node);
 }
 
 /*! \brief Largest stable step over owned cells: CFL h_i / c_i and a bound on the relative volume change
@@ -281,6 +338,140 @@ inline void moveNodes(const ConstField& x, const ConstField& vnode, double dt, c
     Kokkos::parallel_for("unilag::hydro::move_nodes", range(n), move);
 }
 
+//! Extrema of one Picard iteration of the G_e update.
+struct PicardCheck
+{
+    double maxChange;      //!< max_i |sigma^{l+1} - sigma^l|_F / (rho_i a_i^2) (the stopping criterion)
+    double minVolumeRatio; //!< min |T(x^{l+1})| / |T^n|
+    LO badCell;            //!< a cell whose volume or G_e became inadmissible (-1 if none)
+};
+
+/*! \brief Plastic relaxation of G* over dt with tau1 consistent with the relaxed state (gpr.md 1.4, 2.4):
+ *  G = R(G*, kdt) with kdt = dt 6 det(G*)^{5/6} / tau1(sigma_bar(rho, G)), tau1 = tau10 (sigma_Y / sigma_bar)^n.
+ *  Freezing tau1 at the previous iterate makes the Picard loop flip between over- and under-relaxation when n is
+ *  large (sigma_bar crosses sigma_Y each time), so the scalar equation for kdt is solved per cell: with
+ *  x = ln kdt, h(x) = x - ln g(e^x), g(kdt) = dt k(sigma_bar(R(G*, kdt))), h is increasing (relaxing lowers
+ *  sigma_bar, hence g), its root lies in [ln g(0) - 60, ln g(0)], and Illinois regula falsi finds it to 1e-10 in
+ *  x (about 10 evaluations). det G is preserved, so k depends on kdt only through sigma_bar. */
+KOKKOS_INLINE_FUNCTION gpr::Sym3 relaxPlastic(const Material& m, double rho, double dt, const gpr::Sym3& Gs)
+{
+    const double detG = gpr::det(Gs);
+    if (!(detG > 0.0))
+        return Gs;
+    const double lnPre = Kokkos::Experimental::log(6.0 * dt * Kokkos::Experimental::pow(detG, 5.0 / 6.0) / m.tau10);
+    auto lnG = [&](const gpr::Sym3& G) {
+        const double sbar = gpr::vonMises(gpr::shearStress(rho, m.csh, G));
+        return sbar > 0.0 ? lnPre + m.exponent * Kokkos::Experimental::log(sbar / m.sigmaY) : -1e300;
+    };
+    const double x1 = lnG(Gs); // ln g(0): the largest possible ln kdt
+    if (x1 < -40.0)
+        return gpr::relaxStrainKdt(Gs, Kokkos::Experimental::exp(x1)); // kdt < 4e-18: no plastic flow to speak of
+    auto h = [&](double x) { return x - lnG(gpr::relaxStrainKdt(Gs, Kokkos::Experimental::exp(x))); };
+    double a = x1 - 60.0, b = x1;
+    double ha = h(a), hb = h(b);
+    if (!(ha < 0.0))
+        return gpr::relaxStrainKdt(Gs, Kokkos::Experimental::exp(a));
+    if (!(hb > 0.0))
+        return gpr::relaxStrainKdt(Gs, Kokkos::Experimental::exp(b));
+    int side = 0;
+    double x = b;
+    for (int it = 0; it < 100 && b - a > 1e-10; ++it)
+    {
+        x = (a * hb - b * ha) / (hb - ha);
+        if (!(x > a && x < b))
+            x = 0.5 * (a + b);
+        const double hx = h(x);
+        if (hx > 0.0)
+        {
+            b = x;
+            hb = hx;
+            if (side == 1)
+                ha *= 0.5;
+            side = 1;
+        }
+        else if (hx < 0.0)
+        {
+            a = x;
+            ha = hx;
+            if (side == -1)
+                hb *= 0.5;
+            side = -1;
+        }
+        else
+            break;
+    }
+    return gpr::relaxStrainKdt(Gs, Kokkos::Experimental::exp(x));
+}
+
+/*! \brief One Picard iteration of the implicit G_e update (gpr.md 2.4) for owned cells, from the node velocities
+ *  of the last nodal solve: positions x^{l+1} (xNew), rho^{l+1} = m / |T(x^{l+1})|, the velocity gradient
+ *  L = (1/|T^n|) sum_r v_r (x) c_r^n, the transport G* = G^n - dt (G^n L + L^T G^n) (explicit in G^n), the stiff
+ *  relaxation over dt (exact, det-preserving: relaxStrain / relaxPlastic), and sigma^{l+1} = sigma(rho^{l+1}, G^{l+1}).
+ *  Writes G^{l+1} into stateNew and sigma^{l+1} into sigmaNew; sigmaOld is the iterate the nodal solve used. */
+template <int D, class P>
+PicardCheck strainUpdate(const MeshView<D>& mesh, const ConstField& state, const ConstField& aux,
+                         const CellGeometry& geom, const View<const double*>& mass, const View<const int*>& cellMaterial,
+                         const View<const Material*>& materials, const ConstField& xNew, const ConstField& vnode,
+                         double dt, const ConstField& sigmaOld, const Field& sigmaNew, const Field& stateNew)
+{
+    static_assert(P::strain, "strainUpdate is for the strain variants");
+    using S = StateLayout<D, P>;
+    constexpr int NV = D + 1;
+    auto corner = geom.corner;
+    auto volume = geom.volume;
+    auto update = KOKKOS_LAMBDA(const LO i, double (&ext)[3])
+    {
+        const Material& m = materials(cellMaterial(i));
+        const gpr::Sym3 G0 = loadSym3(state, i, S::G);
+        Vec<D> xn[NV];
+        gatherNodes<D>(mesh, xNew, i, xn);
+        const Simplex<D> sNew(xn);
+        const double ratio = sNew.volume / volume(i);
+        ext[1] = Kokkos::Experimental::fmin(ext[1], ratio);
+        bool bad = !(ratio > 0.0);
+        if (m.strainLaw == StrainNone || bad)
+        {
+            storeSym3(stateNew, i, S::G, G0);
+            storeSym3(sigmaNew, i, 0, gpr::Sym3{0, 0, 0, 0, 0, 0});
+        }
+        else
+        {
+            const double rho = mass(i) / sNew.volume;
+            Mat<3> L = Mat<3>::zero();
+            const double inv = 1.0 / volume(i);
+            for (int k = 0; k < NV; ++k)
+            {
+                const LO r = mesh.cellNodes(i, k);
+                for (int a = 0; a < D; ++a)
+                    for (int b = 0; b < D; ++b)
+                        L.a[a][b] += vnode(r, a) * corner(i, k * D + b) * inv;
+            }
+            const gpr::Sym3 Gs = G0 - dt * gpr::transportRate(G0, L);
+            gpr::Sym3 G;
+            if constexpr (P::plastic)
+                G = m.strainLaw == StrainPlastic ? relaxPlastic(m, rho, dt, Gs) : gpr::relaxStrain(Gs, dt, m.tau1);
+            else
+                G = gpr::relaxStrain(Gs, dt, m.tau1);
+            const gpr::Sym3 sigma = gpr::shearStress(rho, m.csh, G);
+            storeSym3(stateNew, i, S::G, G);
+            storeSym3(sigmaNew, i, 0, sigma);
+            const double za = aux(i, Aux::impedance) * aux(i, Aux::sound); // rho a^2 at t^n
+            const double change =
+                Kokkos::Experimental::sqrt(gpr::norm2(sigma - loadSym3(sigmaOld, i, 0))) / za;
+            // admissible: G SPD (det and trace positive), finite stress
+            const double dG = gpr::det(G);
+            bad = !(dG > 0.0) || !(gpr::trace(G) > 0.0) || !(change == change);
+            ext[0] = Kokkos::Experimental::fmin(ext[0], bad ? -1e300 : -change);
+        }
+        if (bad)
+            ext[2] = Kokkos::Experimental::fmin(ext[2], double(i));
+    };
+    double ext[3];
+    minReduce<3>("unilag::gpr::strain_update", mesh.nOwnedCells, update, ext);
+    const bool bad = ext[2] < double(mesh.nOwnedCells);
+    return PicardCheck{-ext[0], ext[1], bad ? LO(ext[2]) : LO(-1)};
+}
+
 //! Extrema reported by the cell update; a step is accepted only if volumes and squared sound speeds stay positive.
 struct UpdateCheck
 {
@@ -291,14 +482,19 @@ struct UpdateCheck
 };
 
 /*! \brief Conservative update of owned cells from the subcell forces (2b, 2c) and the Simpson GCL (2a),
- *  writing stateNew. Returns the validity extrema. */
-template <int D>
+ *  writing stateNew. Returns the validity extrema.
+ *   - strain: T = -p I + sigma with sigma the stress of the last nodal solve (`stress`, so that the forces at a
+ *     node balance exactly); G^{n+1} is already in stateNew (strainUpdate) and is not touched here.
+ *   - heat: E gains dt/m heatRate(i, 0); J^{n+1} = (J^n + dt/m heatRate(i, 1..D)) / (1 + dt rho0 theta^n /
+ *     (tau2 rho^{n+1} theta0)) (gpr.md 2.3: explicit fluxes, implicit relaxation). */
+template <int D, class P = PhysicsHydro>
 UpdateCheck updateCells(const MeshView<D>& mesh, const ConstField& state, const ConstField& aux,
                         const CellGeometry& geom, const View<const double*>& mass, const View<const int*>& cellMaterial,
                         const View<const Material*>& materials, const ConstField& x, const ConstField& xNew,
-                        const ConstField& vnode, double dt, const Field& stateNew)
+                        const ConstField& vnode, double dt, const Field& stateNew,
+                        const ConstField& stress = ConstField(), const ConstField& heatRate = ConstField())
 {
-    using S = HydroState<D>;
+    using S = StateLayout<D, P>;
     constexpr int NV = D + 1;
     auto corner = geom.corner;
     auto volume = geom.volume;
@@ -326,33 +522,50 @@ UpdateCheck updateCells(const MeshView<D>& mesh, const ConstField& state, const 
         for (int k = 0; k < NV; ++k)
         {
             const Vec<D> ck = cornerVec<D>(corner, i, k);
-            const Vec<D> f = (-p) * ck + z * (subcellMatrix<D>(corner, i, k) * (vr[k] - vi));
+            Vec<D> f = (-p) * ck + z * (subcellMatrix<D>(corner, i, k) * (vr[k] - vi));
+            if constexpr (P::strain)
+                f = f + stressTimes<D>(stress, i, ck);
             force = force + f;
             power += dot(f, vr[k]);
             flux += dot(vr[k], ck + 4.0 * sMid.c[k] + sNew.c[k]);
         }
         const double dtm = dt / mass(i);
-        double kin = 0.0;
+        Vec<D> v;
         for (int d = 0; d < D; ++d)
         {
-            const double v = vi[d] + dtm * force[d];
-            stateNew(i, S::vel + d) = v;
-            kin += 0.5 * v * v;
+            v[d] = vi[d] + dtm * force[d];
+            stateNew(i, S::vel + d) = v[d];
         }
-        const double E = state(i, S::energy) + dtm * power;
+        double E = state(i, S::energy) + dtm * power;
+        const Material& m = materials(cellMaterial(i));
         // (2a) with Simpson's rule is exact for linear trajectories: the GCL volume must equal the geometric
         // one up to this step's round-off. Store the geometric one (as the paper's Picard loop does), so that
         // round-off does not accumulate over the steps, and report the one-step defect.
         const double omegaGcl = state(i, S::omega) + dtm * flux / 6.0;
         const double omega = sNew.volume / mass(i);
+        const double rhoNew = 1.0 / omega;
+        gpr::Sym3 G = gpr::identity(1.0);
+        if constexpr (P::strain)
+            G = loadSym3(stateNew, i, S::G);
+        Vec<D> J = Vec<D>::zero();
+        if constexpr (P::heat)
+        {
+            E += dtm * heatRate(i, 0);
+            const double factor =
+                m.heat ? gpr::relaxHeatFactor(dt, m.tau2, rhoNew, m.rho0, aux(i, Aux::theta), m.theta0) : 1.0;
+            for (int d = 0; d < D; ++d)
+            {
+                J[d] = (state(i, S::J + d) + dtm * heatRate(i, 1 + d)) * factor;
+                stateNew(i, S::J + d) = J[d];
+            }
+        }
         stateNew(i, S::energy) = E;
         stateNew(i, S::omega) = omega;
 
         const double ratio = sNew.volume / volume(i);
         // Admissible state: a positive squared sound speed (for an ideal gas: a positive internal energy).
-        const double rhoNew = 1.0 / omega;
-        const Material& m = materials(cellMaterial(i));
-        double c2 = gpr::soundSpeed2(m, rhoNew, gpr::pressure(m, rhoNew, E - kin));
+        const double eps = internalEnergy<D, P>(m, E, v, G, J);
+        double c2 = gpr::soundSpeed2(m.eos, rhoNew, gpr::pressure(m.eos, rhoNew, eps));
         if (!(c2 == c2) || !(omega == omega))
             c2 = -Kokkos::reduction_identity<double>::min(); // NaN: report as the worst possible
         ext[0] = Kokkos::Experimental::fmin(ext[0], ratio);
@@ -363,7 +576,7 @@ UpdateCheck updateCells(const MeshView<D>& mesh, const ConstField& state, const 
             ext[3] = Kokkos::Experimental::fmin(ext[3], double(i));
     };
     double ext[4];
-    minReduce<4>("unilag::hydro::update_cells", mesh.nOwnedCells, update, ext);
+    minReduce<4>("unilag::gpr::update_cells", mesh.nOwnedCells, update, ext);
     const bool bad = ext[3] < double(mesh.nOwnedCells);
     return UpdateCheck{ext[0], ext[1], -ext[2], bad ? LO(ext[3]) : LO(-1)};
 }

@@ -164,7 +164,8 @@ std::string XdmfWriter::writeStep(int index, double time, const std::vector<doub
   else if (coords.size() != static_cast<size_t>(nOwnedNodes_) * 3) err = "XdmfWriter::writeStep: coords size != nOwnedNodes * 3";
   for (const CellField& f : fields) {
     if (!isSafeName(f.name) || !names.insert(f.name).second) err = "XdmfWriter::writeStep: invalid or duplicate field name '" + f.name + "'";
-    else if (f.ncomp != 1 && f.ncomp != 3) err = "XdmfWriter::writeStep: field '" + f.name + "' must have ncomp 1 or 3";
+    else if (f.ncomp != 1 && f.ncomp != 3 && f.ncomp != 6)
+      err = "XdmfWriter::writeStep: field '" + f.name + "' must have ncomp 1, 3 or 6";
     else if (!f.data && nOwnedCells_ > 0) err = "XdmfWriter::writeStep: field '" + f.name + "' has no data";
   }
   throwIfAnyRank(err);
@@ -207,7 +208,8 @@ std::string XdmfWriter::gridXml(int index, double time, const std::vector<CellFi
     << "   <Geometry GeometryType=\"XYZ\">\n"
     << dataItem(nNodes_, 3, "Float", h5, "coordinates") << "   </Geometry>\n";
   for (const CellField& f : fields)
-    s << "   <Attribute Name=\"" << f.name << "\" AttributeType=\"" << (f.ncomp == 1 ? "Scalar" : "Vector")
+    s << "   <Attribute Name=\"" << f.name << "\" AttributeType=\""
+      << (f.ncomp == 1 ? "Scalar" : f.ncomp == 3 ? "Vector" : "Tensor6")
       << "\" Center=\"Cell\">\n"
       << dataItem(nCells_, f.ncomp, "Float", h5, f.name) << "   </Attribute>\n";
   s << "  </Grid>\n";

@@ -16,7 +16,7 @@ namespace unilag::io {
 /*! \brief One cell-centred field on this rank's owned cells. */
 struct CellField {
   std::string name;    //!< dataset/attribute name, e.g. "density" (letters, digits, '_', '-', '.')
-  int ncomp;           //!< 1 = scalar, 3 = vector (always 3 for vectors, z = 0 in 2D)
+  int ncomp;           //!< 1 = scalar, 3 = vector (always 3 for vectors, z = 0 in 2D), 6 = symmetric tensor (xx yy zz xy yz xz)
   const double* data;  //!< row-major, nOwnedCells * ncomp
 };
 

@@ -18,6 +18,7 @@
 #include "mesh/DistributedMesh.hpp"
 #include "physics/Exact.hpp"
 #include "physics/Expression.hpp"
+#include "unilag/Heat.hpp"
 #include "unilag/Hydro.hpp"
 
 namespace unilag
@@ -69,7 +70,7 @@ void allSum(MPI_Comm comm, double (&v)[N])
 //! Phase timers (seconds), Laghos style.
 struct Timers
 {
-    double geometry = 0, nodal = 0, update = 0, halo = 0, io = 0;
+    double geometry = 0, nodal = 0, strain = 0, heat = 0, update = 0, halo = 0, io = 0;
 };
 
 class ScopedTimer
@@ -96,13 +97,42 @@ std::string jsonNumber(double v)
     return os.str();
 }
 
-template <int D>
-class HydroSolver
+//! Kernel material data of a scene material (the scene reader has validated it).
+Material toMaterial(const MaterialSpec& spec)
 {
-    using S = HydroState<D>;
+    Material m;
+    m.eos = spec.eos == "ideal_gas"       ? gpr::idealGasEos(spec.gamma, spec.cv)
+            : spec.eos == "mie_gruneisen" ? gpr::mieGruneisenEos(spec.rho0, spec.c0, spec.Gamma0, spec.s, spec.cv)
+                                          : gpr::neoHookeanEos(spec.rho0, spec.csh, spec.cv);
+    m.rho0 = spec.rho0;
+    if (spec.strainLaw != "fluid")
+    {
+        m.csh = spec.shearSpeed;
+        m.strainLaw = spec.strainLaw == "plastic" ? StrainPlastic : StrainConstant;
+        m.tau1 = spec.tau1;
+        m.tau10 = spec.tau10;
+        m.sigmaY = spec.yieldStress;
+        m.exponent = spec.exponent;
+    }
+    if (spec.heatConduction)
+    {
+        m.heat = 1;
+        m.alpha = spec.alpha;
+        m.tau2 = spec.tau2;
+        m.theta0 = spec.theta0;
+    }
+    return m;
+}
+
+/*! The solver for one scene: dimension D and the physics variant P (Physics.hpp) are compile-time, so a scene
+ *  pays only for the equations its materials need. */
+template <int D, class P>
+class GprSolver
+{
+    using S = StateLayout<D, P>;
 
   public:
-    HydroSolver(const Scene& scene, std::shared_ptr<DistributedMesh> mesh, const RunOptions& options)
+    GprSolver(const Scene& scene, std::shared_ptr<DistributedMesh> mesh, const RunOptions& options)
         : scene_(scene), mesh_(std::move(mesh)), options_(options), comm_(rawComm(mesh_->comm))
     {
         MPI_Comm_rank(comm_, &rank_);
@@ -115,7 +145,15 @@ class HydroSolver
         xNew_ = Teuchos::rcp(new MV(dm.nodeMapOverlap, D));
         vnode_ = Teuchos::rcp(new MV(dm.nodeMapOverlap, D));
         fnode_ = Field("unilag::fnode", dm.nOwnedNodes, D);
-        aux_ = Field("unilag::aux", dm.nCells, Aux::ncomp);
+        aux_ = Field("unilag::aux", dm.nCells, Aux::ncomp<P>());
+        if constexpr (P::strain)
+        {
+            sigma_ = Teuchos::rcp(new MV(dm.cellMapOverlap, 6));
+            sigmaNext_ = Teuchos::rcp(new MV(dm.cellMapOverlap, 6));
+            vnode0_ = Teuchos::rcp(new MV(dm.nodeMapOverlap, D));
+        }
+        if constexpr (P::heat)
+            heatRate_ = Field("unilag::heatRate", dm.nOwnedCells, 1 + D);
         geom_ = CellGeometry(dm.nCells, D);
         mass_ = View<double*>("unilag::mass", dm.nCells);
         cellMaterial_ = View<int*>("unilag::cellMaterial", dm.nCells);
@@ -129,10 +167,13 @@ class HydroSolver
         // Boundary table by group id; every group of the mesh needs a condition.
         {
             const int ng = int(dm.boundaryNames.size());
-            View<int*> type("unilag::bcType", std::max(ng, 1));
+            View<int*> type("unilag::bcType", std::max(ng, 1)), thermal("unilag::bcThermal", std::max(ng, 1));
+            View<double*> temperature("unilag::bcTemperature", std::max(ng, 1));
             Kokkos::View<double* [3], MemSpace> value("unilag::bcValue", std::max(ng, 1));
             auto th = Kokkos::create_mirror_view(type);
             auto vh = Kokkos::create_mirror_view(value);
+            auto thermalH = Kokkos::create_mirror_view(thermal);
+            auto tempH = Kokkos::create_mirror_view(temperature);
             for (int g = 0; g < ng; ++g)
             {
                 auto it = scene_.boundaries.find(dm.boundaryNames[g]);
@@ -140,12 +181,15 @@ class HydroSolver
                     return scene_.file + ": key 'boundaries': the mesh has a boundary group '" + dm.boundaryNames[g] +
                            "' with no condition";
                 const auto& t = it->second.type;
-                th(g) = t == "velocity" ? BcVelocity
-                        : t == "free"   ? BcFree
+                th(g) = t == "velocity"   ? BcVelocity
+                        : t == "free"     ? BcFree
                         : t == "pressure" ? BcPressure
+                        : t == "traction" ? BcTraction
                                           : BcSlipWall;
                 for (int d = 0; d < 3; ++d)
-                    vh(g, d) = it->second.velocity[d];
+                    vh(g, d) = t == "traction" ? it->second.traction[d] : it->second.velocity[d];
+                thermalH(g) = it->second.thermal == "isothermal" ? ThermalIsothermal : ThermalAdiabatic;
+                tempH(g) = it->second.temperature;
                 if (t == "pressure")
                 {
                     const Expr& e = it->second.pressure;
@@ -159,8 +203,12 @@ class HydroSolver
                     return scene_.file + ": key 'boundaries." + name + "': the mesh has no boundary group '" + name + "'";
             Kokkos::deep_copy(type, th);
             Kokkos::deep_copy(value, vh);
+            Kokkos::deep_copy(thermal, thermalH);
+            Kokkos::deep_copy(temperature, tempH);
             bc_.type = type;
             bc_.value = value;
+            bc_.thermal = thermal;
+            bc_.temperature = temperature;
             bcValue_ = value;
             bcValueHost_ = vh;
         }
@@ -170,9 +218,7 @@ class HydroSolver
         auto mh = Kokkos::create_mirror_view(mats);
         for (const auto& [name, spec] : scene_.materials)
         {
-            mh(matNames.size()) = spec.eos == "ideal_gas"       ? gpr::idealGasEos(spec.gamma, spec.cv)
-                                  : spec.eos == "mie_gruneisen" ? gpr::mieGruneisenEos(spec.rho0, spec.c0, spec.Gamma0, spec.s, spec.cv)
-                                                                : gpr::neoHookeanEos(spec.rho0, spec.csh, spec.cv);
+            mh(matNames.size()) = toMaterial(spec);
             matNames.push_back(name);
         }
         Kokkos::deep_copy(mats, mh);
@@ -253,9 +299,19 @@ class HydroSolver
                     sh(i, S::vel + d) = v;
                     kin += 0.5 * v * v;
                 }
-                eps[i] = spec.hasPressure ? gpr::internalEnergy(mh(mat), rho, th) : th;
+                eps[i] = spec.hasPressure ? gpr::internalEnergy(mh(mat).eos, rho, th) : th;
                 sh(i, S::omega) = 1.0 / rho;
                 sh(i, S::energy) = eps[i] + kin;
+                if constexpr (P::strain)
+                {
+                    // at rest: G_e = (rho / rho0)^{2/3} I, so det G_e = (rho / rho0)^2 (gpr.md 1.1) and sigma = 0
+                    const double g = std::cbrt((rho / mh(mat).rho0) * (rho / mh(mat).rho0));
+                    for (int c = 0; c < 6; ++c)
+                        sh(i, S::G + c) = c < 3 ? g : 0.0;
+                }
+                if constexpr (P::heat)
+                    for (int d = 0; d < D; ++d)
+                        sh(i, S::J + d) = 0.0;
                 massH(i) = rho * vol(i);
                 matH(i) = mat;
             }
@@ -364,6 +420,11 @@ class HydroSolver
         if (writer)
             dump(*writer, dumps++, t);
 
+        if (rank_ == 0)
+        {
+            steps_ = std::make_unique<std::ofstream>(outDir / "steps.csv");
+            *steps_ << "step,t,dt,picard_iterations,dt_halvings\n";
+        }
         const auto wall0 = Clock::now();
         auto lastReport = wall0;
         const bool tty = isatty(fileno(stdout));
@@ -378,16 +439,13 @@ class HydroSolver
                     bcValueHost_(g, 0) = (*law)(0.0, 0.0, 0.0, t);
                 Kokkos::deep_copy(bcValue_, bcValueHost_);
             }
+            solveNodes();
+            if constexpr (P::heat)
             {
-                ScopedTimer timer(timers_.nodal);
+                // explicit heat fluxes at t^n (gpr.md 2.3): independent of dt
+                ScopedTimer timer(timers_.heat);
                 auto s = state_->getLocalViewDevice(Tpetra::Access::ReadOnly);
-                auto v = vnode_->getLocalViewDevice(Tpetra::Access::ReadWrite);
-                nodalSolve<D>(m_, bc_, s, aux_, geom_, v, fnode_);
-            }
-            {
-                ScopedTimer timer(timers_.halo);
-                auto owned = vnode_->offsetViewNonConst(dm.nodeMap, 0);
-                vnode_->doImport(*owned, *dm.nodeImporter, Tpetra::INSERT);
+                heatFluxes<D, P>(m_, bc_, s, aux_, geom_, cellMaterial_, materials_, heatRate_);
             }
             // 2. Time step: CFL, volume change, growth, output times and the end time.
             double dt;
@@ -416,37 +474,66 @@ class HydroSolver
                 break;
             }
 
-            // 3. Move nodes and update cells; reject steps that invert a cell or make the internal energy
-            //    non-positive, halving dt (node velocities do not depend on dt at first order).
+            // 3. Move nodes and update cells; reject steps that invert a cell, make the state inadmissible or
+            //    leave the Picard loop unconverged, halving dt (v^0 and sigma^n do not depend on dt).
             UpdateCheck check{};
-            int attempt = 0;
+            int attempt = 0, iterations = 0;
+            std::string picardFailure;
+            if constexpr (P::strain)
+                Tpetra::deep_copy(*vnode0_, *vnode_);
             for (;; ++attempt)
             {
-                ScopedTimer timer(timers_.update);
-                auto x = x_->getLocalViewDevice(Tpetra::Access::ReadOnly);
-                auto xn = xNew_->getLocalViewDevice(Tpetra::Access::OverwriteAll);
-                auto v = vnode_->getLocalViewDevice(Tpetra::Access::ReadOnly);
-                auto s = state_->getLocalViewDevice(Tpetra::Access::ReadOnly);
-                auto sn = stateNew_->getLocalViewDevice(Tpetra::Access::ReadWrite);
-                moveNodes(x, v, dt, xn, m_.nNodes, D);
-                check = updateCells<D>(m_, s, aux_, geom_, mass_, cellMaterial_, materials_, x, xn, v, dt, sn);
-                double ext[3] = {-check.minVolumeRatio, -check.minSound2, check.maxGclDefect};
-                MPI_Allreduce(MPI_IN_PLACE, ext, 3, MPI_DOUBLE, MPI_MAX, comm_);
-                check.minVolumeRatio = -ext[0];
-                check.minSound2 = -ext[1];
-                check.maxGclDefect = ext[2];
-                if (check.minVolumeRatio > 0.0 && check.minSound2 > 0.0)
-                    break;
+                bool ok = true;
+                picardFailure.clear();
+                if constexpr (P::strain)
+                {
+                    if (attempt > 0)
+                    {
+                        Tpetra::deep_copy(*vnode_, *vnode0_);
+                        computeAux(); // sigma^n again
+                    }
+                    ok = picard(dt, iterations, picardFailure);
+                }
+                if (ok)
+                {
+                    ScopedTimer timer(timers_.update);
+                    auto x = x_->getLocalViewDevice(Tpetra::Access::ReadOnly);
+                    auto xn = xNew_->getLocalViewDevice(Tpetra::Access::OverwriteAll);
+                    auto v = vnode_->getLocalViewDevice(Tpetra::Access::ReadOnly);
+                    auto s = state_->getLocalViewDevice(Tpetra::Access::ReadOnly);
+                    auto sn = stateNew_->getLocalViewDevice(Tpetra::Access::ReadWrite);
+                    moveNodes(x, v, dt, xn, m_.nNodes, D);
+                    ConstField sigma;
+                    if constexpr (P::strain)
+                        sigma = sigma_->getLocalViewDevice(Tpetra::Access::ReadOnly);
+                    check = updateCells<D, P>(m_, s, aux_, geom_, mass_, cellMaterial_, materials_, x, xn, v, dt, sn,
+                                              sigma, heatRate_);
+                    double ext[3] = {-check.minVolumeRatio, -check.minSound2, check.maxGclDefect};
+                    MPI_Allreduce(MPI_IN_PLACE, ext, 3, MPI_DOUBLE, MPI_MAX, comm_);
+                    check.minVolumeRatio = -ext[0];
+                    check.minSound2 = -ext[1];
+                    check.maxGclDefect = ext[2];
+                    if (check.minVolumeRatio > 0.0 && check.minSound2 > 0.0)
+                        break;
+                }
                 if (attempt >= scene_.maxRetries)
                     break;
                 dt *= 0.5;
                 ++retries;
+            }
+            if (!picardFailure.empty() && attempt >= scene_.maxRetries)
+            {
+                failure = picardFailure;
+                break;
             }
             if (!(check.minVolumeRatio > 0.0 && check.minSound2 > 0.0))
             {
                 failure = diagnose(check, t, dt, attempt);
                 break;
             }
+            picardTotal_ += iterations;
+            picardMax_ = std::max(picardMax_, iterations);
+            stepLog(step + 1, t + dt, dt, iterations, attempt);
             maxGcl = std::max(maxGcl, check.maxGclDefect);
             // 4. Boundary impulse and work (only nodes where a condition acts carry a net force).
             {
@@ -543,6 +630,11 @@ class HydroSolver
            << "  \"dimension\": " << D << ",\n  \"cells\": " << cells << ",\n  \"nodes\": " << nodes << ",\n"
            << "  \"ranks\": " << size_ << ",\n  \"threads\": " << options_.threads << ",\n"
            << "  \"steps\": " << step << ",\n  \"retries\": " << retries << ",\n"
+           << "  \"physics\": {\"strain\": " << (P::strain ? "true" : "false")
+           << ", \"plastic\": " << (P::plastic ? "true" : "false") << ", \"heat\": " << (P::heat ? "true" : "false")
+           << "},\n"
+           << "  \"picard_iterations\": {\"mean\": " << jsonNumber(step > 0 ? double(picardTotal_) / step : 0.0)
+           << ", \"max\": " << picardMax_ << "},\n"
            << "  \"t_final\": " << jsonNumber(t) << ",\n  \"wall_seconds\": " << jsonNumber(wall) << ",\n"
            << "  \"cell_steps_per_second\": " << jsonNumber(cellSteps) << ",\n"
            << "  \"mass_relative_change\": " << jsonNumber(massChange) << ",\n"
@@ -559,6 +651,8 @@ class HydroSolver
         js << "},\n";
         js << "  \"time_share\": {\"geometry\": " << jsonNumber(timers_.geometry / wall)
            << ", \"nodal_solve\": " << jsonNumber(timers_.nodal / wall)
+           << ", \"strain_update\": " << jsonNumber(timers_.strain / wall)
+           << ", \"heat_fluxes\": " << jsonNumber(timers_.heat / wall)
            << ", \"cell_update\": " << jsonNumber(timers_.update / wall)
            << ", \"halo\": " << jsonNumber(timers_.halo / wall) << ", \"io\": " << jsonNumber(timers_.io / wall)
            << "},\n";
@@ -576,6 +670,8 @@ class HydroSolver
                         "(%.3g cell-steps/s); mass %.1e, momentum %.1e, energy %.1e",
                         scene_.name.c_str(), D, (long long)cells, size_, options_.threads, step, t, wall, cellSteps,
                         massChange, momentumChange, energyChange);
+            if (P::strain)
+                std::printf("; Picard %.2f mean, %d max", step > 0 ? double(picardTotal_) / step : 0.0, picardMax_);
             if (l1 >= 0.0)
                 std::printf("; L1(density) %.4g, shock radius %.4g", l1, shock);
             std::printf("\nunilag: output in %s\n", (writer ? writer->collectionPath() : outDir.string()).c_str());
@@ -592,11 +688,95 @@ class HydroSolver
     }
 
   private:
+    //! EOS, signal speeds, temperature and sigma^n (into sigma_) for all local cells.
     void computeAux()
     {
         ScopedTimer timer(timers_.nodal);
         auto s = state_->getLocalViewDevice(Tpetra::Access::ReadOnly);
-        computeEos<D>(s, cellMaterial_, materials_, aux_, m_.nCells);
+        Field sigma;
+        if constexpr (P::strain)
+            sigma = sigma_->getLocalViewDevice(Tpetra::Access::OverwriteAll);
+        computeEos<D, P>(s, cellMaterial_, materials_, aux_, m_.nCells, sigma);
+    }
+
+    //! Nodal solve at owned nodes with T = -p^n I + sigma_ (strain), then node velocities to all local nodes.
+    void solveNodes()
+    {
+        {
+            ScopedTimer timer(timers_.nodal);
+            auto s = state_->getLocalViewDevice(Tpetra::Access::ReadOnly);
+            auto v = vnode_->getLocalViewDevice(Tpetra::Access::ReadWrite);
+            ConstField sigma;
+            if constexpr (P::strain)
+                sigma = sigma_->getLocalViewDevice(Tpetra::Access::ReadOnly);
+            nodalSolve<D, P>(m_, bc_, s, aux_, geom_, v, fnode_, sigma);
+        }
+        ScopedTimer timer(timers_.halo);
+        auto owned = vnode_->offsetViewNonConst(mesh_->nodeMap, 0);
+        vnode_->doImport(*owned, *mesh_->nodeImporter, Tpetra::INSERT);
+    }
+
+    /*! Picard loop of gpr.md 2.4 for a step dt: vnode_ holds the nodal solution for sigma_ = sigma^n. Each
+     *  iteration moves the nodes, updates G_e implicitly (strainUpdate, G^{l+1} into stateNew_) and, unless the
+     *  stress has converged, solves the nodes again with sigma^{l+1}. On success vnode_ and sigma_ are the
+     *  consistent pair the cell update needs (the forces at each node then balance exactly). Collective. */
+    bool picard(double dt, int& iterations, std::string& failure)
+    {
+        const auto& dm = *mesh_;
+        double change = 0.0;
+        for (int l = 0; l < scene_.picardMaxIterations; ++l)
+        {
+            iterations = l + 1;
+            PicardCheck pc;
+            {
+                ScopedTimer timer(timers_.strain);
+                auto x = x_->getLocalViewDevice(Tpetra::Access::ReadOnly);
+                auto xn = xNew_->getLocalViewDevice(Tpetra::Access::OverwriteAll);
+                auto v = vnode_->getLocalViewDevice(Tpetra::Access::ReadOnly);
+                auto s = state_->getLocalViewDevice(Tpetra::Access::ReadOnly);
+                auto sn = stateNew_->getLocalViewDevice(Tpetra::Access::ReadWrite);
+                auto so = sigma_->getLocalViewDevice(Tpetra::Access::ReadOnly);
+                auto snext = sigmaNext_->getLocalViewDevice(Tpetra::Access::ReadWrite);
+                moveNodes(x, v, dt, xn, m_.nNodes, D);
+                pc = strainUpdate<D, P>(m_, s, aux_, geom_, mass_, cellMaterial_, materials_, xn, v, dt, so, snext, sn);
+            }
+            double ext[3] = {pc.maxChange, -pc.minVolumeRatio, pc.badCell >= 0 ? 1.0 : 0.0};
+            MPI_Allreduce(MPI_IN_PLACE, ext, 3, MPI_DOUBLE, MPI_MAX, comm_);
+            change = ext[0];
+            if (ext[2] > 0.0 || !(-ext[1] > 0.0))
+            {
+                std::string local;
+                if (pc.badCell >= 0)
+                    local = "cell " + std::to_string(dm.cellGid[pc.badCell]) + " became inadmissible (inverted, or G_e not "
+                            "positive definite) in Picard iteration " + std::to_string(l + 1) + " with dt " +
+                            jsonNumber(dt);
+                failure = firstMessage(comm_, local);
+                return false;
+            }
+            if (change <= scene_.picardTolerance)
+                return true;
+            if (l + 1 == scene_.picardMaxIterations)
+                break;
+            std::swap(sigma_, sigmaNext_);
+            {
+                ScopedTimer timer(timers_.halo);
+                auto owned = sigma_->offsetViewNonConst(dm.cellMap, 0);
+                sigma_->doImport(*owned, *dm.cellImporter, Tpetra::INSERT);
+            }
+            solveNodes();
+        }
+        failure = "the Picard loop did not converge in " + std::to_string(scene_.picardMaxIterations) +
+                  " iterations (relative stress change " + jsonNumber(change) + " > tolerance " +
+                  jsonNumber(scene_.picardTolerance) + ", last dt " + jsonNumber(dt) + ")";
+        return false;
+    }
+
+    //! One line per accepted step in steps.csv (rank 0): time, dt, Picard iterations, dt halvings.
+    void stepLog(long step, double t, double dt, int iterations, int halvings)
+    {
+        if (steps_)
+            *steps_ << step << ',' << std::setprecision(12) << t << ',' << dt << ',' << iterations << ',' << halvings
+                    << '\n';
     }
 
     std::string diagnose(const UpdateCheck& check, double t, double dt, int attempts)
@@ -844,14 +1024,56 @@ class HydroSolver
             volume[i] = vol(i);
             gid[i] = double(dm.cellGid[i]);
         }
-        writer.writeStep(index, t, coords,
-                         {{"density", 1, rho.data()},
-                          {"pressure", 1, p.data()},
-                          {"velocity", 3, vel.data()},
-                          {"specific_internal_energy", 1, eps.data()},
-                          {"volume", 1, volume.data()},
-                          {"rank", 1, part.data()},
-                          {"global_id", 1, gid.data()}});
+        std::vector<io::CellField> fields{{"density", 1, rho.data()},
+                                          {"pressure", 1, p.data()},
+                                          {"velocity", 3, vel.data()},
+                                          {"specific_internal_energy", 1, eps.data()},
+                                          {"volume", 1, volume.data()},
+                                          {"rank", 1, part.data()},
+                                          {"global_id", 1, gid.data()}};
+        std::vector<double> mises, gdet, gdev, gten, theta, jvec;
+        if constexpr (P::strain)
+        {
+            // von Mises stress (plastic maps), det G_e and the G_e anisotropy |dev G| / tr G
+            auto sg = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), sigma_->getLocalViewDevice(Tpetra::Access::ReadOnly));
+            mises.resize(n);
+            gdet.resize(n);
+            gdev.resize(n);
+            for (LO i = 0; i < n; ++i)
+            {
+                mises[i] = gpr::vonMises(loadSym3(sg, i, 0));
+                const gpr::Sym3 G = loadSym3(sh, i, S::G);
+                gdet[i] = gpr::det(G);
+                gdev[i] = std::sqrt(gpr::norm2(gpr::dev(G))) / gpr::trace(G);
+            }
+            gten.resize(6 * std::size_t(n));
+            for (LO i = 0; i < n; ++i)
+            {
+                // XDMF Tensor6 order: xx, yy, zz, xy, yz, xz
+                const gpr::Sym3 G = loadSym3(sh, i, S::G);
+                const double c[6] = {G.xx, G.yy, G.zz, G.xy, G.yz, G.xz};
+                for (int k = 0; k < 6; ++k)
+                    gten[6 * i + k] = c[k];
+            }
+            fields.push_back({"G", 6, gten.data()});
+            fields.push_back({"von_mises_stress", 1, mises.data()});
+            fields.push_back({"G_det", 1, gdet.data()});
+            fields.push_back({"G_anisotropy", 1, gdev.data()});
+        }
+        if constexpr (P::heat)
+        {
+            theta.resize(n);
+            jvec.assign(3 * std::size_t(n), 0.0);
+            for (LO i = 0; i < n; ++i)
+            {
+                theta[i] = ah(i, Aux::theta);
+                for (int d = 0; d < D; ++d)
+                    jvec[3 * i + d] = sh(i, S::J + d);
+            }
+            fields.push_back({"temperature", 1, theta.data()});
+            fields.push_back({"thermal_impulse", 3, jvec.data()});
+        }
+        writer.writeStep(index, t, coords, fields);
     }
 
     const Scene& scene_;
@@ -861,7 +1083,12 @@ class HydroSolver
     int rank_ = 0, size_ = 1;
     MeshView<D> m_;
     Teuchos::RCP<MV> state_, stateNew_, x_, xNew_, vnode_;
+    Teuchos::RCP<MV> sigma_, sigmaNext_, vnode0_; //!< strain: Picard stress iterates, nodal solution for sigma^n
     Field fnode_, aux_;
+    Field heatRate_; //!< heat: m dE/dt and m dJ/dt of the fluxes at t^n (owned cells)
+    long picardTotal_ = 0;
+    int picardMax_ = 0;
+    std::unique_ptr<std::ofstream> steps_;
     CellGeometry geom_;
     View<double*> mass_;
     View<int*> cellMaterial_;
@@ -873,10 +1100,10 @@ class HydroSolver
     Timers timers_;
 };
 
-template <int D>
-int runDim(const Scene& scene, std::shared_ptr<DistributedMesh> mesh, const RunOptions& options, MPI_Comm comm)
+template <int D, class P>
+int runPhysics(const Scene& scene, std::shared_ptr<DistributedMesh> mesh, const RunOptions& options, MPI_Comm comm)
 {
-    HydroSolver<D> solver(scene, mesh, options);
+    GprSolver<D, P> solver(scene, mesh, options);
     const std::string error = solver.initialize();
     int rank;
     MPI_Comm_rank(comm, &rank);
@@ -894,6 +1121,28 @@ int runDim(const Scene& scene, std::shared_ptr<DistributedMesh> mesh, const RunO
     }
     MPI_Barrier(comm);
     return solver.run();
+}
+
+/*! The physics variant a scene needs, from its materials: G_e where some material has shear stiffness, the
+ *  plasticity law where some material uses it, J where some material conducts heat. */
+template <int D>
+int runDim(const Scene& scene, std::shared_ptr<DistributedMesh> mesh, const RunOptions& options, MPI_Comm comm)
+{
+    bool strain = false, plastic = false, heat = false;
+    for (const auto& [name, spec] : scene.materials)
+    {
+        strain |= spec.strainLaw != "fluid";
+        plastic |= spec.strainLaw == "plastic";
+        heat |= spec.heatConduction;
+    }
+    if (plastic)
+        return heat ? runPhysics<D, Physics<true, true, true>>(scene, mesh, options, comm)
+                    : runPhysics<D, Physics<true, true, false>>(scene, mesh, options, comm);
+    if (strain)
+        return heat ? runPhysics<D, Physics<true, false, true>>(scene, mesh, options, comm)
+                    : runPhysics<D, Physics<true, false, false>>(scene, mesh, options, comm);
+    return heat ? runPhysics<D, Physics<false, false, true>>(scene, mesh, options, comm)
+                : runPhysics<D, PhysicsHydro>(scene, mesh, options, comm);
 }
 
 } // namespace

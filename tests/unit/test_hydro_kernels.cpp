@@ -179,7 +179,7 @@ template <int D> struct Hydro
         : nCells(h.nCells()), nNodes(h.nNodes()), cellNodes("cellNodes", nCells, NV), offsets("offsets", nNodes + 1),
           corners("corners", nCells * NV), faceGroup("faceGroup", nCells, NV), cellMaterial("cellMaterial", nCells),
           materials("materials", 1), x("x", nNodes, D), xNew("xNew", nNodes, D), state("state", nCells, S::ncomp),
-          stateNew("stateNew", nCells, S::ncomp), aux("aux", nCells, unilag::Aux::ncomp), vnode("vnode", nNodes, D),
+          stateNew("stateNew", nCells, S::ncomp), aux("aux", nCells, unilag::Aux::ncomp<unilag::PhysicsHydro>()), vnode("vnode", nNodes, D),
           fnode("fnode", nNodes, D), geom(nCells, D), mass("mass", nCells)
     {
         auto cn = Kokkos::create_mirror_view(cellNodes);
@@ -227,7 +227,7 @@ template <int D> struct Hydro
         bc.value = value;
 
         auto mh = Kokkos::create_mirror_view(materials);
-        mh(0) = unilag::gpr::idealGasEos(gamma, 1.0);
+        mh(0) = unilag::fluidMaterial(unilag::gpr::idealGasEos(gamma, 1.0));
         Kokkos::deep_copy(materials, mh);
         Kokkos::deep_copy(cellMaterial, 0);
 
