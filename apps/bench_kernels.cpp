@@ -16,6 +16,9 @@
  *  kernel were the whole step; `bytes_per_second` (geometry only) is a lower bound of the memory traffic (each
  *  array read or written once); `cells` and `nodes` are the mesh size; the step benchmark also reports the share
  *  of its time spent in `geometry`, `eos`, `nodal`, `update` (fractions summing to about 1).
+ *  `variant_step/<variant>/...` is a whole step of each physics variant (hydro, elastic, plastic, heat,
+ *  plastic_heat) with one Picard iteration, so the cost of each variant per cell-step sits next to the hydro one;
+ *  its counter `picard_iteration` is the share of one Picard iteration (nodal solve + G_e update) in the step.
  */
 #include <algorithm>
 #include <chrono>
@@ -27,6 +30,7 @@
 #include <memory>
 #include <stdexcept>
 #include <string>
+#include <typeinfo>
 #include <utility>
 
 #include <benchmark/benchmark.h>
@@ -37,6 +41,7 @@
 #include "io/Scene.hpp"
 #include "mesh/DistributedMesh.hpp"
 #include "mesh/GlobalMesh.hpp"
+#include "unilag/Heat.hpp"
 #include "unilag/Hydro.hpp"
 
 namespace
@@ -105,6 +110,8 @@ struct Fixture
         Kokkos::deep_copy(type, int(BcSlipWall));
         bc.type = type;
         bc.value = value;
+        bc.thermal = View<int*>("bench::bcThermal", ng); // adiabatic
+        bc.temperature = View<double*>("bench::bcTemperature", ng);
 
         // Coordinates, geometry, then a smooth state at the cell centroids:
         // rho = 1 + 0.1 x, p = 1 + 0.5 sin(3x) cos(2y), v = 0.05 (sin(2y), -sin(2x)[, 0.5 sin(2x + y)]).
@@ -167,6 +174,7 @@ struct Cache
 {
     std::map<double, std::unique_ptr<Fixture<2>>> f2;
     std::map<double, std::unique_ptr<Fixture<3>>> f3;
+    std::map<std::string, std::shared_ptr<void>> variants; //!< VariantFixture<D, P> by type and mesh size
 };
 Cache* cache = nullptr;
 
@@ -297,6 +305,138 @@ void benchStep(benchmark::State& state, double h)
     }
 }
 
+/*! The state of a physics variant on a base fixture's mesh: the same flow, plus G_e = (rho/rho0)^{2/3} I with a
+ *  smooth 1% anisotropic perturbation (so sigma != 0 and, for the plastic variant, about half the cells are past
+ *  the yield stress) and a smooth J. One ideal-gas material with the variant's constitutive laws. */
+template <int D, class P>
+struct VariantFixture
+{
+    using S = StateLayout<D, P>;
+    Fixture<D>* base;
+    Field state, stateNew, aux, sigma, sigmaNew, heatRate;
+    View<Material*> materials;
+
+    VariantFixture(Fixture<D>* f) : base(f)
+    {
+        const LO nc = f->m.nCells;
+        state = Field("bench::vstate", nc, S::ncomp);
+        stateNew = Field("bench::vstateNew", nc, S::ncomp);
+        aux = Field("bench::vaux", nc, Aux::ncomp<P>());
+        sigma = Field("bench::sigma", nc, 6);
+        sigmaNew = Field("bench::sigmaNew", nc, 6);
+        heatRate = Field("bench::heatRate", nc, 1 + D);
+        Material mat = fluidMaterial(gpr::idealGasEos(1.4, 1.0));
+        if constexpr (P::strain)
+        {
+            mat.csh = 0.5;
+            mat.strainLaw = P::plastic ? StrainPlastic : StrainConstant;
+            mat.tau1 = gpr::infinity(); // elastic
+            mat.tau10 = 1.0; // kdt ~ 6 dt (sigma_bar / sigma_Y)^10: a few percent of relaxation per step where it yields
+            mat.sigmaY = 2e-3; // about the median von Mises stress of the perturbed G
+            mat.exponent = 10.0;
+        }
+        if constexpr (P::heat)
+        {
+            mat.heat = 1;
+            mat.alpha = 1.0;
+            mat.tau2 = 1e-3;
+            mat.theta0 = 1.0;
+        }
+        materials = View<Material*>("bench::vmaterials", 1);
+        Kokkos::deep_copy(materials, mat);
+        auto sh = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), f->state);
+        auto vh = Kokkos::create_mirror_view(state);
+        auto xh = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), f->x);
+        for (LO i = 0; i < nc; ++i)
+        {
+            double c[3] = {0, 0, 0};
+            for (int k = 0; k < D + 1; ++k)
+                for (int d = 0; d < D; ++d)
+                    c[d] += xh(f->dm->cellNodesHost[(D + 1) * i + k], d) / (D + 1);
+            for (int col = 0; col < 2 + D; ++col)
+                vh(i, col) = sh(i, col);
+            if constexpr (P::strain)
+            {
+                const double g = std::cbrt(std::pow(1.0 / sh(i, 0), 2.0)), e = 0.01 * std::sin(4.0 * c[0] + 3.0 * c[1]);
+                const double G[6] = {g * (1 + e), g * (1 - 0.5 * e), g * (1 - 0.5 * e), 0.5 * g * e, 0.0, 0.0};
+                for (int k = 0; k < 6; ++k)
+                    vh(i, S::G + k) = G[k];
+            }
+            if constexpr (P::heat)
+                for (int d = 0; d < D; ++d)
+                    vh(i, S::J + d) = 0.01 * std::cos(2.0 * c[d]);
+        }
+        Kokkos::deep_copy(state, vh);
+        computeEos<D, P>(state, f->cellMaterial, materials, aux, nc, sigma);
+    }
+};
+
+/*! A whole step of a physics variant with one Picard iteration: geometry, EOS (+ stress), [heat fluxes], nodal
+ *  solve, move, [G_e update], cell update. Counter `picard_iteration` is the share of one more Picard iteration
+ *  (nodal solve + G_e update) in that time: a step with k iterations costs about (1 + (k - 1) share) of it. */
+template <int D, class P>
+void benchVariant(benchmark::State& state, double h)
+{
+    Fixture<D>* f = fixture<D>(state, h);
+    if (!f)
+        return;
+    auto& slot = cache->variants[std::string(typeid(P).name()) + std::to_string(D) + "/" + std::to_string(h)];
+    if (!slot)
+        slot = std::make_shared<VariantFixture<D, P>>(f);
+    auto* v = static_cast<VariantFixture<D, P>*>(slot.get());
+    double iter = 0.0, total = 0.0;
+    for (auto _ : state)
+    {
+        Kokkos::fence();
+        const auto t0 = Clock::now();
+        computeGeometry<D>(f->m, f->x, f->geom, f->m.nCells);
+        computeEos<D, P>(v->state, f->cellMaterial, v->materials, v->aux, f->m.nCells, v->sigma);
+        if constexpr (P::heat)
+            heatFluxes<D, P>(f->m, f->bc, v->state, v->aux, f->geom, f->cellMaterial, v->materials, v->heatRate);
+        Kokkos::fence();
+        const auto t1 = Clock::now();
+        nodalSolve<D, P>(f->m, f->bc, v->state, v->aux, f->geom, f->vnode, f->fnode, v->sigma);
+        moveNodes(f->x, f->vnode, f->dt, f->xNew, f->m.nNodes, D);
+        if constexpr (P::strain)
+            benchmark::DoNotOptimize(strainUpdate<D, P>(f->m, v->state, v->aux, f->geom, f->mass, f->cellMaterial,
+                                                        v->materials, f->xNew, f->vnode, f->dt, v->sigma, v->sigmaNew,
+                                                        v->stateNew));
+        Kokkos::fence();
+        const auto t2 = Clock::now();
+        benchmark::DoNotOptimize(updateCells<D, P>(f->m, v->state, v->aux, f->geom, f->mass, f->cellMaterial,
+                                                   v->materials, f->x, f->xNew, f->vnode, f->dt, v->stateNew, v->sigma,
+                                                   v->heatRate));
+        Kokkos::fence();
+        const auto t3 = Clock::now();
+        iter += std::chrono::duration<double>(t2 - t1).count();
+        total += std::chrono::duration<double>(t3 - t0).count();
+        state.SetIterationTime(std::chrono::duration<double>(t3 - t0).count());
+    }
+    setCounters(state, *f->dm, false);
+    if (total > 0.0)
+        state.counters["picard_iteration"] = iter / total;
+}
+
+template <int D, std::size_t N>
+void registerVariants(const MeshSpec (&specs)[N])
+{
+    using Fn = void (*)(benchmark::State&, double);
+    const std::pair<const char*, Fn> variants[] = {{"hydro", benchVariant<D, PhysicsHydro>},
+                                                   {"elastic", benchVariant<D, Physics<true, false, false>>},
+                                                   {"plastic", benchVariant<D, Physics<true, true, false>>},
+                                                   {"heat", benchVariant<D, Physics<false, false, true>>},
+                                                   {"plastic_heat", benchVariant<D, Physics<true, true, true>>}};
+    for (const auto& [variant, fn] : variants)
+        for (const MeshSpec& s : specs)
+        {
+            const std::string name = std::string("variant_step/") + variant + "/" + std::to_string(D) + "D/" + s.label;
+            const double h = s.h;
+            benchmark::RegisterBenchmark(name.c_str(), [fn, h](benchmark::State& st) { fn(st, h); })
+                ->UseManualTime()
+                ->Unit(benchmark::kMicrosecond);
+        }
+}
+
 template <int D, std::size_t N>
 void registerAll(const MeshSpec (&specs)[N])
 {
@@ -328,6 +468,8 @@ int main(int argc, char** argv)
 
     registerAll<2>(sizes2d);
     registerAll<3>(sizes3d);
+    registerVariants<2>(sizes2d);
+    registerVariants<3>(sizes3d);
 
     cache = new Cache;
     benchmark::RunSpecifiedBenchmarks();

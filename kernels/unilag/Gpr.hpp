@@ -596,6 +596,153 @@ KOKKOS_INLINE_FUNCTION Sym3 relaxStrain(const Sym3& G, double dt, double tau1)
     return relaxStrainKdt(G, strainRelaxationRate(G, tau1) * dt);
 }
 
+/*! \brief Plastic strain relaxation over dt with tau1 consistent with the relaxed state (gpr.md 1.4, 2.4):
+ *  G = R(G*, kdt), kdt = dt 6 det(G*)^{5/6} / tau1(sigma_bar(rho, G)), tau1 = tau10 (sigma_Y / sigma_bar)^n, where R
+ *  is the exact relaxation of relaxStrainKdt. Freezing tau1 at a previous iterate instead makes a Picard loop flip
+ *  between over- and under-relaxation for large n (sigma_bar crosses sigma_Y each time).
+ *
+ *  Method: the relaxed states form a one-parameter family G(s) with the eigenvectors of G* (relaxStrainKdt), with
+ *  closed-form eigenvalues and kdt(s) = (1/g) int_0^s w. So the scalar equation is solved in y = ln s:
+ *    Phi(y) = ln int_0^s w - ln g - ln(6 dt det^{5/6} / tau10) - n ln(sigma_bar(s) / sigma_Y) = 0,
+ *  increasing in y (relaxation lowers sigma_bar) with slope >= about 1, by Newton with analytic derivatives inside a
+ *  bisection bracket: one eigen-decomposition and a few one-panel quadratures per call. Negligible flow
+ *  (kdt < 1e-14 even at sigma_bar(G*)) costs only the von Mises stress of G*. det G is preserved to round-off. */
+KOKKOS_INLINE_FUNCTION Sym3 relaxPlasticStrain(const Sym3& Gs, double rho, double csh, double dt, double tau10,
+                                               double sigmaY, double n)
+{
+    const double mu = rho * csh * csh;
+    const double detG = det(Gs);
+    if (!(detG > 0.0) || !(dt > 0.0))
+        return Gs;
+    const double lnPre = kmath::log(6.0 * dt / tau10) + (5.0 / 6.0) * kmath::log(detG);
+    const double sbar0 = vonMises(shearStress(rho, csh, Gs));
+    if (!(sbar0 > 0.0))
+        return Gs;
+    const double lnKdt0 = lnPre + n * kmath::log(sbar0 / sigmaY); // kdt if tau1 stayed at its value for G*
+    if (lnKdt0 < -32.0)
+    {
+        // kdt < 1.3e-14: one explicit step of dG/dt = -k G dev G is exact to O(kdt^2)
+        return Gs - kmath::exp(lnKdt0) * symProduct(Gs, dev(Gs));
+    }
+    const Eigen3 e = eigen(Gs);
+    const double lmin = e.value[0], lmax = e.value[2];
+    if (!(lmin > 0.0) || lmin == lmax)
+        return Gs;
+    double rh[3], q[3];
+    for (int j = 0; j < 3; ++j)
+    {
+        rh[j] = e.value[j] / lmax;
+        q[j] = (lmax - e.value[j]) / lmax;
+    }
+    const double c = kmath::cbrt(rh[0] * rh[1] * rh[2]);
+    const double g = lmax * c;
+    const double lnG = kmath::log(g);
+    const double rmax = q[0] / rh[0];
+    const double rmean = (q[0] / rh[0] + q[1] / rh[1]) / 3.0;
+    const double sSat = kmath::log(lmax / lmin) + 40.0;
+
+    // log-eigenvalue increments D and their s-derivatives at s
+    auto logs = [&](double s, double (&D)[3], double (&dD)[3]) {
+        const double y = kmath::exp(-s), em = -kmath::expm1(-s);
+        for (int j = 0; j < 3; ++j)
+        {
+            const double arg = rh[j] + q[j] * y;
+            D[j] = arg < 0.5 ? kmath::log(arg) : kmath::log1p(-q[j] * em);
+            dD[j] = -q[j] * y / arg;
+        }
+    };
+    // int_0^s w: panels of width 2, closed-form tail once r_max e^{-a} <= 1e-8 (as in relaxStrainKdt)
+    auto integral = [&](double s) {
+        double a = 0.0, acc = 0.0;
+        while (s - a > 2.0)
+        {
+            if (rmax * kmath::exp(-a) <= 1e-8)
+                return acc + (s - a) + rmean * kmath::exp(-a) * kmath::expm1(-(s - a));
+            acc += detail::relaxQuadrature(rh, q, c, a, a + 2.0);
+            a += 2.0;
+        }
+        return acc + detail::relaxQuadrature(rh, q, c, a, s);
+    };
+    // Phi(y) and dPhi/dy
+    auto phi = [&](double yv, double& dphi) {
+        const double s = kmath::exp(yv);
+        double D[3], dD[3];
+        logs(s, D, dD);
+        const double mD = (D[0] + D[1] + D[2]) / 3.0, mdD = (dD[0] + dD[1] + dD[2]) / 3.0;
+        double lam[3], dlam[3];
+        for (int i = 0; i < 3; ++i)
+        {
+            lam[i] = e.value[i] * kmath::exp(mD - D[i]);
+            dlam[i] = lam[i] * (mdD - dD[i]);
+        }
+        const double m = (lam[0] + lam[1] + lam[2]) / 3.0, dm = (dlam[0] + dlam[1] + dlam[2]) / 3.0;
+        double sg[3], dsg[3];
+        for (int i = 0; i < 3; ++i)
+        {
+            sg[i] = -mu * lam[i] * (lam[i] - m);
+            dsg[i] = -mu * (dlam[i] * (lam[i] - m) + lam[i] * (dlam[i] - dm));
+        }
+        const double sm = (sg[0] + sg[1] + sg[2]) / 3.0, dsm = (dsg[0] + dsg[1] + dsg[2]) / 3.0;
+        double s2 = 0.0, ds2 = 0.0;
+        for (int i = 0; i < 3; ++i)
+        {
+            s2 += (sg[i] - sm) * (sg[i] - sm);
+            ds2 += 2.0 * (sg[i] - sm) * (dsg[i] - dsm);
+        }
+        const double I = integral(s);
+        const double w = detail::relaxIntegrand(rh, q, c, s);
+        // ln sigma_bar = 0.5 ln(1.5 s2)
+        const double lnSbar = 0.5 * kmath::log(1.5 * s2);
+        dphi = s * (w / I - n * 0.5 * ds2 / s2);
+        return kmath::log(I) - lnG - lnPre - n * (lnSbar - kmath::log(sigmaY));
+    };
+    // bracket: kdt* <= kdt0 and int_0^s w >= c s, so s* <= g kdt0 / c; below, 50 e-folds less
+    // (Phi > 0 there by construction, unless clipped at saturation); Newton starts from sigma_bar = sigma_Y, where
+    // kdt = exp(lnPre) and s ~ g kdt (w(0) = 1): Phi is nearly linear in y, so 4-7 evaluations.
+    double yb = lnKdt0 + lnG - kmath::log(c), d;
+    if (yb > kmath::log(sSat))
+    {
+        yb = kmath::log(sSat);
+        if (!(phi(yb, d) > 0.0))
+            return identity(g); // relaxed to equilibrium within the step
+    }
+    double ya = yb - 50.0;
+    double yv = ya; // if Phi(ya) >= 0 the flow is negligible (50 e-folds below its bound): take ya
+    if (phi(ya, d) < 0.0)
+    {
+        yv = kmath::fmin(kmath::fmax(lnPre + lnG, ya), yb);
+        double fy = phi(yv, d);
+        if (fy > 0.0)
+            yb = yv;
+        else
+            ya = yv;
+        for (int it = 0; it < 60; ++it)
+        {
+            double next = yv - fy / d;
+            if (!(next > ya && next < yb))
+                next = 0.5 * (ya + yb);
+            const double step = kmath::fabs(next - yv);
+            yv = next;
+            fy = phi(yv, d);
+            if (fy > 0.0)
+                yb = yv;
+            else
+                ya = yv;
+            // Phi has a round-off floor of ~1e-12 (it is a sum of logarithms of size ~n); |Phi| < 1e-11 is kdt to
+            // 1e-11 relative
+            if (!(step > 1e-12) || kmath::fabs(fy) < 1e-11)
+                break;
+        }
+    }
+    double D[3], dD[3];
+    logs(kmath::exp(yv), D, dD);
+    const double mD = (D[0] + D[1] + D[2]) / 3.0;
+    double dl[3];
+    for (int i = 0; i < 3; ++i)
+        dl[i] = e.value[i] * kmath::expm1(mD - D[i]);
+    return Gs + fromEigen(dl, e.vector);
+}
+
 // ------------------------------------------------------------------------------------------------------------
 // Heat conduction (gpr.md 1.2, 1.4, 2.3)
 // ------------------------------------------------------------------------------------------------------------

@@ -1,17 +1,210 @@
 /*! \file Heat.hpp
- *  \brief Placeholder: explicit Rusanov heat fluxes (gpr.md 2.3) land from the `heat` branch.
+ *  \brief Explicit Rusanov heat-conduction fluxes of the GPR model at t^n (gpr.md 2.3): the conduction rates of
+ *  the total energy and of the thermal impulse J of every owned cell.
+ *
+ *  With m_i dE_i/dt = -sum_f (q.n)_f s_f and m_i dJ_i/dt = -sum_f (theta I . n)_f s_f over the NV faces of cell i,
+ *  the face fluxes between cell i and the cell j across the face (n the unit normal out of i, s_f the face area)
+ *  are, first order (cell values on both sides):
+ *     (q.n)_f         = 1/2 (q_i + q_j) . n      - 1/2 lambda_f rho_f (eps_j - eps_i)
+ *     (theta I . n)_f = 1/2 (theta_i + theta_j) n - 1/2 lambda_f rho_f (J_j - J_i)
+ *  with the heat flux q = alpha^2 theta J (gpr.md 1.2), lambda_f = max(c_h,i, c_h,j), rho_f = (rho_i + rho_j)/2.
+ *  Documented choices (they differ from the letter of the digest):
+ *   - c_h = (alpha / rho) sqrt(theta / cv): the speed of the heat subsystem with the LOCAL density. gpr.md 1.2
+ *     writes rho0, which underestimates the speed where rho < rho0 and makes the explicit scheme unstable there.
+ *     Only c_h enters lambda_f: the Rusanov viscosity of the heat subsystem, not the full signal speed a_i.
+ *   - The energy flux dissipates the jump of the specific INTERNAL energy eps, not of E as on the slide, so that
+ *     jumps of kinetic and elastic energy are not diffused by heat conduction; the factor rho_f makes the units
+ *     those of the conserved quantity rho E (and rho J in the J flux).
+ *   - Materials with heat == 0 neither conduct nor receive: their rates are zero, and a face between a
+ *     conducting cell and a non-conducting one is adiabatic (mirror state) for the conducting cell.
+ *  Boundary faces (cellFaceGroup >= 0) take a ghost state from bc.thermal of the group:
+ *   - adiabatic:  theta_g = theta_i, eps_g = eps_i, J_g = J_i - 2 (J_i . n) n, rho_g = rho_i; evaluated in closed
+ *     form, (q.n)_f = 0 exactly and (theta I . n)_f = (theta_i + c_h,i rho_i J_i . n) n;
+ *   - isothermal: theta_g = theta_w = bc.temperature(g), eps_g = eps_i + cv (theta_w - theta_i) (ideal-gas-like;
+ *     it only sets the dissipation), J_g = J_i, rho_g = rho_i, same material as cell i.
+ *  An interior face without a local neighbour (never for owned cells of a DistributedMesh) is adiabatic.
+ *
+ *  Conservation. Each cell sums its own faces (no atomics; bitwise independent of the thread count and, with
+ *  the ghost layer, of the partition). A face flux is computed twice, once from each side, and the two results
+ *  are exact negatives in floating point: the formulas are symmetric in (i, j) up to the exactly antisymmetric
+ *  differences (a - b = -(b - a) in IEEE arithmetic, sums and max commute), and the face area vector is the
+ *  antisymmetrised S_ij = (A_i - A_j)/2 of the two cells' outward area vectors A = -D c_k (each cell computes
+ *  its corner vectors from its own node order, so A_i = -A_j holds only to round-off for tetrahedra; it is exact
+ *  for triangles). Hence the total energy exchanged between owned cells sums to zero up to the round-off of the
+ *  per-cell sums. The per-cell quantities of both sides are products and quotients only (no FMA contraction can
+ *  make them differ between the two evaluations).
  */
 #pragma once
 
 #include "unilag/Geometry.hpp"
+#include "unilag/Gpr.hpp"
 #include "unilag/Physics.hpp"
 
 namespace unilag
 {
-template <int D, class P>
-void heatFluxes(const MeshView<D>&, const BoundaryView&, const ConstField&, const ConstField&, const CellGeometry&,
-                const View<const int*>&, const View<const Material*>&, const Field& rate)
+namespace heat
 {
-    Kokkos::deep_copy(rate, 0.0);
+
+//! What a face flux needs from one side: density, temperature, internal energy, heat speed, q = alpha^2 theta J.
+template <int D>
+struct Side
+{
+    double rho, theta, eps, ch;
+    double alpha, alpha2, cv;
+    Vec<D> J, q;
+    int heat; //!< material conducts
+};
+
+//! Heat-subsystem speed c_h = (alpha / rho) sqrt(theta / cv) with the local density (see the file comment).
+KOKKOS_INLINE_FUNCTION double heatSpeed(double alpha, double rho, double theta, double cv)
+{
+    return alpha / rho * Kokkos::Experimental::sqrt(Kokkos::Experimental::fmax(theta / cv, 0.0));
 }
+
+/*! \brief Fluxes (q.n) s and (theta I . n) s through a face of area vector S (s = |S|, pointing from a to b).
+ *  Swapping a and b and negating S gives exactly the negated results. */
+template <int D>
+KOKKOS_INLINE_FUNCTION void rusanov(const Side<D>& a, const Side<D>& b, const Vec<D>& S, double s, double& fE,
+                                    Vec<D>& fJ)
+{
+    const double lambda = Kokkos::Experimental::fmax(a.ch, b.ch);
+    const double diss = 0.5 * lambda * (0.5 * (a.rho + b.rho)) * s;
+    double qS = 0.0;
+    for (int d = 0; d < D; ++d)
+        qS += (a.q[d] + b.q[d]) * S[d];
+    fE = 0.5 * qS - diss * (b.eps - a.eps);
+    const double theta = 0.5 * (a.theta + b.theta);
+    for (int d = 0; d < D; ++d)
+        fJ[d] = theta * S[d] - diss * (b.J[d] - a.J[d]);
+}
+
+//! Adiabatic face (mirror state) in closed form: (q.n) s = 0, (theta I . n) s = (theta + c_h rho J.n) n s.
+template <int D>
+KOKKOS_INLINE_FUNCTION void adiabatic(const Side<D>& a, const Vec<D>& S, double s, double& fE, Vec<D>& fJ)
+{
+    fE = 0.0;
+    const double coef = a.theta + a.ch * a.rho * (dot(a.J, S) / s);
+    for (int d = 0; d < D; ++d)
+        fJ[d] = coef * S[d];
+}
+
+//! The face fluxes of the cells of one mesh (a functor the kernel calls per face; also callable from tests).
+template <int D, class P>
+struct Faces
+{
+    static constexpr int NV = D + 1;
+    using S = StateLayout<D, P>;
+    static_assert(P::heat, "heat fluxes need the J columns (a Physics with heat)");
+
+    MeshView<D> mesh;
+    BoundaryView bc;
+    ConstField state, aux;
+    Field corner;
+    View<const int*> cellMaterial;
+    View<const Material*> materials;
+
+    KOKKOS_INLINE_FUNCTION Side<D> side(LO i) const
+    {
+        const Material& m = materials(cellMaterial(i));
+        Side<D> s;
+        s.heat = m.heat;
+        s.rho = 1.0 / state(i, S::omega);
+        s.theta = aux(i, Aux::theta);
+        s.eps = aux(i, Aux::eps);
+        s.alpha = m.alpha;
+        s.alpha2 = m.alpha * m.alpha;
+        s.cv = m.eos.cv;
+        s.ch = heatSpeed(m.alpha, s.rho, s.theta, s.cv);
+        for (int d = 0; d < D; ++d)
+        {
+            s.J[d] = state(i, S::J + d);
+            s.q[d] = s.alpha2 * s.theta * s.J[d];
+        }
+        return s;
+    }
+
+    /*! \brief Fluxes (q.n) s and (theta I . n) s out of cell i (state a = side(i)) through its face k. */
+    KOKKOS_INLINE_FUNCTION void face(LO i, const Side<D>& a, int k, double& fE, Vec<D>& fJ) const
+    {
+        Vec<D> A; // outward area vector of face k
+        for (int d = 0; d < D; ++d)
+            A[d] = -double(D) * corner(i, k * D + d);
+        const int g = mesh.cellFaceGroup(i, k);
+        if (g >= 0)
+        {
+            const double s = norm(A);
+            if (bc.thermal(g) == ThermalIsothermal)
+            {
+                Side<D> b = a;
+                b.theta = bc.temperature(g);
+                b.eps = a.eps + a.cv * (b.theta - a.theta);
+                b.ch = heatSpeed(a.alpha, a.rho, b.theta, a.cv);
+                for (int d = 0; d < D; ++d)
+                    b.q[d] = a.alpha2 * b.theta * a.J[d];
+                rusanov(a, b, A, s, fE, fJ);
+            }
+            else
+                adiabatic(a, A, s, fE, fJ);
+            return;
+        }
+        const LO j = mesh.cellNeighbour(i, k);
+        if (j < 0)
+        {
+            adiabatic(a, A, norm(A), fE, fJ);
+            return;
+        }
+        const Side<D> b = side(j);
+        // antisymmetrised area vector (A_i - A_j)/2 = (D/2)(c_j,m - c_i,k), m the face of j facing i
+        for (int m = 0; m < NV; ++m)
+            if (mesh.cellNeighbour(j, m) == i)
+            {
+                for (int d = 0; d < D; ++d)
+                    A[d] = (0.5 * D) * (corner(j, m * D + d) - corner(i, k * D + d));
+                break;
+            }
+        const double s = norm(A);
+        if (!b.heat)
+            adiabatic(a, A, s, fE, fJ);
+        else
+            rusanov(a, b, A, s, fE, fJ);
+    }
+};
+
+} // namespace heat
+
+/*! Heat-conduction rates of owned cells at t^n: rate(i, 0) = -sum_f (q.n)_f s_f (so m_i dE_i/dt gets this), and
+ *  rate(i, 1 + d) = -sum_f (theta I . n)_f,d s_f (m_i dJ_i,d/dt gets this), d < D. Faces of cell i are its NV faces;
+ *  interior faces use the neighbour cellNeighbour(i,k); boundary faces a ghost state from bc.thermal of the face group.
+ *  Needs state (StateLayout<D,P>: omega, J) and aux (Aux::theta, Aux::eps) on all local cells (owned and ghosts),
+ *  geom.corner of the owned cells and their face neighbours; cells of a material with heat == 0 get zero rates.
+ *  The flux formulas and the boundary states are described in the file comment. */
+template <int D, class P>
+void heatFluxes(const MeshView<D>& mesh, const BoundaryView& bc, const ConstField& state, const ConstField& aux,
+                const CellGeometry& geom, const View<const int*>& cellMaterial, const View<const Material*>& materials,
+                const Field& rate)
+{
+    constexpr int NV = D + 1;
+    const heat::Faces<D, P> faces{mesh, bc, state, aux, geom.corner, cellMaterial, materials};
+    auto cell = KOKKOS_LAMBDA(const LO i)
+    {
+        const heat::Side<D> a = faces.side(i);
+        double rE = 0.0;
+        Vec<D> rJ = Vec<D>::zero();
+        if (a.heat)
+            for (int k = 0; k < NV; ++k)
+            {
+                double fE;
+                Vec<D> fJ;
+                faces.face(i, a, k, fE, fJ);
+                rE -= fE;
+                for (int d = 0; d < D; ++d)
+                    rJ[d] -= fJ[d];
+            }
+        rate(i, 0) = rE;
+        for (int d = 0; d < D; ++d)
+            rate(i, 1 + d) = rJ[d];
+    };
+    Kokkos::parallel_for("unilag::heat::fluxes", range(mesh.nOwnedCells), cell);
+}
+
 } // namespace unilag

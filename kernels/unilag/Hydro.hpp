@@ -346,67 +346,10 @@ struct PicardCheck
     LO badCell;            //!< a cell whose volume or G_e became inadmissible (-1 if none)
 };
 
-/*! \brief Plastic relaxation of G* over dt with tau1 consistent with the relaxed state (gpr.md 1.4, 2.4):
- *  G = R(G*, kdt) with kdt = dt 6 det(G*)^{5/6} / tau1(sigma_bar(rho, G)), tau1 = tau10 (sigma_Y / sigma_bar)^n.
- *  Freezing tau1 at the previous iterate makes the Picard loop flip between over- and under-relaxation when n is
- *  large (sigma_bar crosses sigma_Y each time), so the scalar equation for kdt is solved per cell: with
- *  x = ln kdt, h(x) = x - ln g(e^x), g(kdt) = dt k(sigma_bar(R(G*, kdt))), h is increasing (relaxing lowers
- *  sigma_bar, hence g), its root lies in [ln g(0) - 60, ln g(0)], and Illinois regula falsi finds it to 1e-10 in
- *  x (about 10 evaluations). det G is preserved, so k depends on kdt only through sigma_bar. */
-KOKKOS_INLINE_FUNCTION gpr::Sym3 relaxPlastic(const Material& m, double rho, double dt, const gpr::Sym3& Gs)
-{
-    const double detG = gpr::det(Gs);
-    if (!(detG > 0.0))
-        return Gs;
-    const double lnPre = Kokkos::Experimental::log(6.0 * dt * Kokkos::Experimental::pow(detG, 5.0 / 6.0) / m.tau10);
-    auto lnG = [&](const gpr::Sym3& G) {
-        const double sbar = gpr::vonMises(gpr::shearStress(rho, m.csh, G));
-        return sbar > 0.0 ? lnPre + m.exponent * Kokkos::Experimental::log(sbar / m.sigmaY) : -1e300;
-    };
-    const double x1 = lnG(Gs); // ln g(0): the largest possible ln kdt
-    if (x1 < -40.0)
-        return gpr::relaxStrainKdt(Gs, Kokkos::Experimental::exp(x1)); // kdt < 4e-18: no plastic flow to speak of
-    auto h = [&](double x) { return x - lnG(gpr::relaxStrainKdt(Gs, Kokkos::Experimental::exp(x))); };
-    double a = x1 - 60.0, b = x1;
-    double ha = h(a), hb = h(b);
-    if (!(ha < 0.0))
-        return gpr::relaxStrainKdt(Gs, Kokkos::Experimental::exp(a));
-    if (!(hb > 0.0))
-        return gpr::relaxStrainKdt(Gs, Kokkos::Experimental::exp(b));
-    int side = 0;
-    double x = b;
-    for (int it = 0; it < 100 && b - a > 1e-10; ++it)
-    {
-        x = (a * hb - b * ha) / (hb - ha);
-        if (!(x > a && x < b))
-            x = 0.5 * (a + b);
-        const double hx = h(x);
-        if (hx > 0.0)
-        {
-            b = x;
-            hb = hx;
-            if (side == 1)
-                ha *= 0.5;
-            side = 1;
-        }
-        else if (hx < 0.0)
-        {
-            a = x;
-            ha = hx;
-            if (side == -1)
-                hb *= 0.5;
-            side = -1;
-        }
-        else
-            break;
-    }
-    return gpr::relaxStrainKdt(Gs, Kokkos::Experimental::exp(x));
-}
-
 /*! \brief One Picard iteration of the implicit G_e update (gpr.md 2.4) for owned cells, from the node velocities
  *  of the last nodal solve: positions x^{l+1} (xNew), rho^{l+1} = m / |T(x^{l+1})|, the velocity gradient
  *  L = (1/|T^n|) sum_r v_r (x) c_r^n, the transport G* = G^n - dt (G^n L + L^T G^n) (explicit in G^n), the stiff
- *  relaxation over dt (exact, det-preserving: relaxStrain / relaxPlastic), and sigma^{l+1} = sigma(rho^{l+1}, G^{l+1}).
+ *  relaxation over dt (exact, det-preserving: relaxStrain / relaxPlasticStrain), and sigma^{l+1} = sigma(rho^{l+1}, G^{l+1}).
  *  Writes G^{l+1} into stateNew and sigma^{l+1} into sigmaNew; sigmaOld is the iterate the nodal solve used. */
 template <int D, class P>
 PicardCheck strainUpdate(const MeshView<D>& mesh, const ConstField& state, const ConstField& aux,
@@ -449,7 +392,9 @@ PicardCheck strainUpdate(const MeshView<D>& mesh, const ConstField& state, const
             const gpr::Sym3 Gs = G0 - dt * gpr::transportRate(G0, L);
             gpr::Sym3 G;
             if constexpr (P::plastic)
-                G = m.strainLaw == StrainPlastic ? relaxPlastic(m, rho, dt, Gs) : gpr::relaxStrain(Gs, dt, m.tau1);
+                G = m.strainLaw == StrainPlastic
+                        ? gpr::relaxPlasticStrain(Gs, rho, m.csh, dt, m.tau10, m.sigmaY, m.exponent)
+                        : gpr::relaxStrain(Gs, dt, m.tau1);
             else
                 G = gpr::relaxStrain(Gs, dt, m.tau1);
             const gpr::Sym3 sigma = gpr::shearStress(rho, m.csh, G);

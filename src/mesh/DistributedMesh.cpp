@@ -1,9 +1,14 @@
 #include "mesh/DistributedMesh.hpp"
 
 #include <algorithm>
+#include <array>
 #include <map>
 #include <numeric>
+#include <stdexcept>
+#include <string>
+#include <tuple>
 #include <unordered_map>
+#include <unordered_set>
 
 #include <mpi.h>
 
@@ -196,14 +201,70 @@ void DistributedMesh::buildFromOwnedCells(const OwnedCells& oc, const MV& rootCo
     MPI_Alltoallv(sendBuf.data(), sendCount.data(), sdispl.data(), MPI_LONG_LONG, recvBuf.data(), recvCount.data(),
                   rdispl.data(), MPI_LONG_LONG, mpi);
 
-    std::map<GO, std::size_t> ghostRecord; // gid -> offset in recvBuf
+    // The node owner now holds every cell around its owned nodes (from the records of phase 1). Phase 2: it
+    // sends back, to each other rank that touches the node, the cells around the node that rank does not own;
+    // so every rank receives every cell that shares a node with one of its owned cells.
+    const int me = comm->getRank();
+    std::vector<int> recvRank(recvBuf.size() / L);
+    for (int p = 0; p < nranks; ++p)
+        for (int off = rdispl[p]; off < rdispl[p + 1]; off += L)
+            recvRank[off / L] = p;
+    std::vector<int> send2Count(nranks, 0), recv2Count(nranks), s2displ(nranks + 1, 0), r2displ(nranks + 1, 0);
+    std::vector<std::vector<long long>> send2(nranks);
+    {
+        // records grouped by node
+        std::vector<std::pair<GO, std::size_t>> byNode;
+        byNode.reserve(recvBuf.size() / L);
+        for (std::size_t off = 0; off < recvBuf.size(); off += L)
+            byNode.emplace_back(recvBuf[off], off);
+        std::sort(byNode.begin(), byNode.end());
+        std::vector<char> touches(nranks);
+        std::vector<std::unordered_set<GO>> sent(nranks); // each cell once per destination
+        for (std::size_t a = 0, b; a < byNode.size(); a = b)
+        {
+            for (b = a; b < byNode.size() && byNode[b].first == byNode[a].first;)
+                ++b;
+            std::fill(touches.begin(), touches.end(), 0);
+            for (std::size_t q = a; q < b; ++q)
+                touches[recvRank[byNode[q].second / L]] = 1;
+            for (int p = 0; p < nranks; ++p)
+            {
+                if (p == me || !touches[p])
+                    continue;
+                for (std::size_t q = a; q < b; ++q)
+                {
+                    const std::size_t off = byNode[q].second;
+                    if (recvRank[off / L] != p && sent[p].insert(recvBuf[off + 1]).second)
+                        send2[p].insert(send2[p].end(), recvBuf.begin() + off, recvBuf.begin() + off + L);
+                }
+            }
+        }
+    }
+    for (int p = 0; p < nranks; ++p)
+    {
+        send2Count[p] = int(send2[p].size());
+        s2displ[p + 1] = s2displ[p] + send2Count[p];
+    }
+    std::vector<long long> send2Buf(s2displ[nranks]);
+    for (int p = 0; p < nranks; ++p)
+        std::copy(send2[p].begin(), send2[p].end(), send2Buf.begin() + s2displ[p]);
+    MPI_Alltoall(send2Count.data(), 1, MPI_INT, recv2Count.data(), 1, MPI_INT, mpi);
+    for (int p = 0; p < nranks; ++p)
+        r2displ[p + 1] = r2displ[p] + recv2Count[p];
+    std::vector<long long> recv2Buf(r2displ[nranks]);
+    MPI_Alltoallv(send2Buf.data(), send2Count.data(), s2displ.data(), MPI_LONG_LONG, recv2Buf.data(),
+                  recv2Count.data(), r2displ.data(), MPI_LONG_LONG, mpi);
+
+    // Ghosts: the cells of both phases that this rank does not own (records of one cell are identical).
+    std::map<GO, const long long*> ghostRecord; // gid -> record
     {
         std::unordered_map<GO, LO> isOwned;
         for (LO i = 0; i < nOwn; ++i)
             isOwned[oc.gid[i]] = i;
-        for (std::size_t off = 0; off < recvBuf.size(); off += L)
-            if (!isOwned.count(recvBuf[off + 1]))
-                ghostRecord.emplace(recvBuf[off + 1], off);
+        for (const auto* buf : {&recvBuf, &recv2Buf})
+            for (std::size_t off = 0; off < buf->size(); off += L)
+                if (!isOwned.count((*buf)[off + 1]))
+                    ghostRecord.emplace((*buf)[off + 1], buf->data() + off);
     }
 
     // Local cells: owned (sorted) then ghosts (sorted).
@@ -213,14 +274,14 @@ void DistributedMesh::buildFromOwnedCells(const OwnedCells& oc, const MV& rootCo
     cellRegion = oc.region;
     std::vector<GO> cellNodeGid(oc.nodes);
     cellFaceGroupHost = oc.groups;
-    for (const auto& [gid, off] : ghostRecord)
+    for (const auto& [gid, rec] : ghostRecord)
     {
         cellGid.push_back(gid);
-        cellRegion.push_back(int(recvBuf[off + 2]));
+        cellRegion.push_back(int(rec[2]));
         for (int j = 0; j < nv; ++j)
         {
-            cellNodeGid.push_back(recvBuf[off + 3 + j]);
-            cellFaceGroupHost.push_back(int(recvBuf[off + 3 + nv + j]));
+            cellNodeGid.push_back(rec[3 + j]);
+            cellFaceGroupHost.push_back(int(rec[3 + nv + j]));
         }
     }
     cellMapOverlap = mapOf(cellGid, comm);
@@ -247,6 +308,66 @@ void DistributedMesh::buildFromOwnedCells(const OwnedCells& oc, const MV& rootCo
     cellNodesHost.resize(cellNodeGid.size());
     for (std::size_t q = 0; q < cellNodeGid.size(); ++q)
         cellNodesHost[q] = nodeLid.at(cellNodeGid[q]);
+
+    // Face neighbours: faces (opposite local node k) matched by their sorted node ids.
+    {
+        struct FaceRec
+        {
+            std::array<LO, 3> key;
+            LO cell;
+            int k;
+        };
+        std::vector<FaceRec> faces;
+        faces.reserve(cellNodesHost.size());
+        for (LO i = 0; i < nCells; ++i)
+            for (int k = 0; k < nv; ++k)
+            {
+                FaceRec f{{-1, -1, -1}, i, k};
+                int n = 0;
+                for (int j = 0; j < nv; ++j)
+                    if (j != k)
+                        f.key[n++] = cellNodesHost[std::size_t(nv) * i + j];
+                auto order = [&f](int a, int b) {
+                    if (f.key[b] < f.key[a])
+                        std::swap(f.key[a], f.key[b]);
+                };
+                order(0, 1); // 3-entry sorting network; in 2D the third entry stays -1
+                if (n == 3)
+                {
+                    order(1, 2);
+                    order(0, 1);
+                }
+                faces.push_back(f);
+            }
+        std::sort(faces.begin(), faces.end(), [](const FaceRec& a, const FaceRec& b) {
+            return std::tie(a.key, a.cell, a.k) < std::tie(b.key, b.cell, b.k);
+        });
+        cellNeighbourHost.assign(cellNodesHost.size(), -1);
+        for (std::size_t a = 0, b; a < faces.size(); a = b)
+        {
+            for (b = a + 1; b < faces.size() && faces[b].key == faces[a].key;)
+                ++b;
+            if (b - a > 2)
+                throw std::logic_error("DistributedMesh: a face is shared by more than two cells");
+            if (b - a == 2)
+            {
+                cellNeighbourHost[std::size_t(nv) * faces[a].cell + faces[a].k] = faces[a + 1].cell;
+                cellNeighbourHost[std::size_t(nv) * faces[a + 1].cell + faces[a + 1].k] = faces[a].cell;
+            }
+        }
+        // Owned cells see every face neighbour (the ghost layer holds all cells sharing a node with them), so
+        // an owned face has a local neighbour exactly when it is not a boundary face.
+        for (LO i = 0; i < nOwnedCells; ++i)
+            for (int k = 0; k < nv; ++k)
+            {
+                const std::size_t q = std::size_t(nv) * i + k;
+                if ((cellFaceGroupHost[q] < 0) != (cellNeighbourHost[q] >= 0))
+                    throw std::logic_error("DistributedMesh: face " + std::to_string(k) + " of cell " +
+                                           std::to_string(cellGid[i]) +
+                                           (cellFaceGroupHost[q] < 0 ? " is interior but has no local neighbour"
+                                                                     : " is a boundary face with a neighbour"));
+            }
+    }
 
     // Coordinates of all local nodes.
     {
@@ -278,19 +399,23 @@ void DistributedMesh::buildFromOwnedCells(const OwnedCells& oc, const MV& rootCo
     // Device copies.
     cellNodes = Kokkos::View<LO**, Kokkos::LayoutLeft, MemSpace>("unilag::cellNodes", nCells, nv);
     cellFaceGroup = View<int**>("unilag::cellFaceGroup", nCells, nv);
+    cellNeighbour = View<LO**>("unilag::cellNeighbour", nCells, nv);
     nodeCornerOffsets = View<LO*>("unilag::nodeCornerOffsets", nNodes + 1);
     nodeCorners = View<LO*>("unilag::nodeCorners", corners.size());
     {
         auto cn = Kokkos::create_mirror_view(cellNodes);
         auto fg = Kokkos::create_mirror_view(cellFaceGroup);
+        auto nb = Kokkos::create_mirror_view(cellNeighbour);
         for (LO i = 0; i < nCells; ++i)
             for (int k = 0; k < nv; ++k)
             {
                 cn(i, k) = cellNodesHost[std::size_t(nv) * i + k];
                 fg(i, k) = cellFaceGroupHost[std::size_t(nv) * i + k];
+                nb(i, k) = cellNeighbourHost[std::size_t(nv) * i + k];
             }
         Kokkos::deep_copy(cellNodes, cn);
         Kokkos::deep_copy(cellFaceGroup, fg);
+        Kokkos::deep_copy(cellNeighbour, nb);
         Kokkos::deep_copy(nodeCornerOffsets,
                           Kokkos::View<const LO*, Kokkos::HostSpace, Kokkos::MemoryUnmanaged>(offsets.data(), offsets.size()));
         Kokkos::deep_copy(nodeCorners,

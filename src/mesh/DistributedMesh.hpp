@@ -2,8 +2,10 @@
  *  \brief The mesh distributed over MPI ranks on Tpetra maps, with one layer of node-neighbour ghost cells.
  *
  *  Ownership: Zoltan2 (multijagged, cell centroids) assigns cells to ranks; each node is owned by one rank
- *  that owns a cell around it (Tpetra::createOneToOne). Ghost cells are all cells around owned nodes that the
- *  rank does not own, so the nodal solver at an owned node sees every cell of its corners locally.
+ *  that owns a cell around it (Tpetra::createOneToOne). Ghost cells are all cells that share a node with an
+ *  owned cell (the node-neighbour layer of the owned cells) and are not owned. Hence the nodal solver at an
+ *  owned node sees every cell of its corners locally, every face neighbour of an owned cell is local
+ *  (cellNeighbour, for face fluxes), and so is the node-neighbour stencil of a second-order reconstruction.
  *  Local numbering is owned-first: cells [0, nOwnedCells) then ghosts, nodes [0, nOwnedNodes) then the other
  *  nodes of local cells, each part sorted by global id. Node->corner lists are sorted by global cell id, so
  *  every node sum adds the same numbers in the same order on any number of ranks and threads.
@@ -57,11 +59,13 @@ class DistributedMesh
     std::vector<int> cellRegion;
     std::vector<LO> cellNodesHost;   //!< nv per cell
     std::vector<int> cellFaceGroupHost; //!< nv per cell
+    std::vector<LO> cellNeighbourHost;  //!< nv per cell: local cell across face k, -1 if none is local
     std::vector<double> coords0;     //!< initial node coordinates, 3 per local node
 
     // Device views for the kernels.
     Kokkos::View<LO**, Kokkos::LayoutLeft, MemSpace> cellNodes;
     View<int**> cellFaceGroup;
+    View<LO**> cellNeighbour; //!< local cell across face k (opposite local node k), -1 on the boundary or not local
     View<LO*> nodeCornerOffsets, nodeCorners;
 
     //! Output numbering: owned nodes get offset + local index; other local nodes that of their owner.
@@ -76,6 +80,7 @@ class DistributedMesh
         m.nodeCornerOffsets = nodeCornerOffsets;
         m.nodeCorners = nodeCorners;
         m.cellFaceGroup = cellFaceGroup;
+        m.cellNeighbour = cellNeighbour;
         m.nOwnedCells = nOwnedCells;
         m.nCells = nCells;
         m.nOwnedNodes = nOwnedNodes;
