@@ -113,6 +113,31 @@ set_tests_properties(hydro_limit_euler hydro_limit_gpr PROPERTIES FIXTURES_SETUP
 add_test(NAME hydro_limit_agree COMMAND ${PYTHON} ${SCRIPTS}/compare_runs.py 1e-6 ${WORK}/hydro_limit_euler ${WORK}/hydro_limit_gpr)
 set_tests_properties(hydro_limit_agree PROPERTIES FIXTURES_REQUIRED hydro_limit LABELS "gpr;regression")
 
+# Imposed traction on an elastic block: velocity behind the longitudinal wave p / (rho c_L) and its front c_L t within 2%.
+add_test(NAME traction_wave_run COMMAND ${UNILAG} run ${SCENES}/traction_wave.yaml --quiet --check --output ${WORK}/traction_wave)
+set_tests_properties(traction_wave_run PROPERTIES FIXTURES_SETUP traction_wave LABELS "gpr;regression")
+add_test(NAME traction_wave_check COMMAND ${PYTHON} ${SCRIPTS}/traction_wave.py ${WORK}/traction_wave 4.3301e-3 0.69282 0.4 0.02)
+set_tests_properties(traction_wave_check PROPERTIES FIXTURES_REQUIRED traction_wave LABELS "gpr;regression")
+
+# Every GPR equation at once (viscous, heat-conducting 3D Sedov): 1, 2, 3 ranks and 1, 2 threads give the same fields.
+foreach(run "1;1" "1;2" "2;1" "3;1")
+  list(GET run 0 np)
+  list(GET run 1 nt)
+  add_test(NAME gpr3d_np${np}_t${nt} COMMAND ${MPI_RUN} ${np} ${UNILAG} run ${SCENES}/sedov3d_viscous_heat.yaml --quiet --check
+           --output ${WORK}/gpr3d_np${np}_t${nt})
+  set_tests_properties(gpr3d_np${np}_t${nt} PROPERTIES ENVIRONMENT "OMP_NUM_THREADS=${nt}" FIXTURES_SETUP gpr3d
+                       LABELS "gpr;mpi;regression" PROCESSORS ${np})
+endforeach()
+add_test(NAME gpr3d_agree COMMAND ${PYTHON} ${SCRIPTS}/compare_runs.py 1e-12 ${WORK}/gpr3d_np1_t1 ${WORK}/gpr3d_np1_t2
+         ${WORK}/gpr3d_np2_t1 ${WORK}/gpr3d_np3_t1)
+set_tests_properties(gpr3d_agree PROPERTIES FIXTURES_REQUIRED gpr3d LABELS "gpr;mpi;regression")
+
+# A Picard loop capped below what an elastic step needs is never accepted unconverged: each step is cut and retried,
+# and when the retries run out the run stops with the diagnosis (exit 4, no NaN).
+add_test(NAME picard_cap_diagnosis COMMAND bash ${SCRIPTS}/expect_unstable.sh ${WORK}/picard_cap
+         -- ${UNILAG} run ${SCENES}/traction_wave.yaml --quiet --set scheme.picard_max_iterations=2 --set time.max_retries=3)
+set_tests_properties(picard_cap_diagnosis PROPERTIES LABELS "gpr;regression" PASS_REGULAR_EXPRESSION "Picard loop did not converge in 2 iterations(.|\n)*expect_unstable: PASS")
+
 # Full GPR model (gpr.md 3.4-3.9). The exact-solution code of the two convergence scripts checks itself first.
 add_test(NAME exact_solutions_selftest COMMAND bash -c
          "${PYTHON} ${SCRIPTS}/viscous_shock.py --selftest && ${PYTHON} ${SCRIPTS}/heat_conduction.py --selftest")

@@ -304,6 +304,12 @@ GlobalMesh loadMesh(const Scene& scene)
         gmsh::option::setNumber("General.NumThreads", 1);
         try
         {
+            // A .geo can read the scene's size as Mesh.MeshSizeMax (structured meshes compute their counts from it).
+            if (!scene.geometry.empty())
+            {
+                gmsh::option::setNumber("Mesh.MeshSizeMin", scene.meshSize);
+                gmsh::option::setNumber("Mesh.MeshSizeMax", scene.meshSize);
+            }
             gmsh::open(source);
             if (!scene.geometry.empty())
             {

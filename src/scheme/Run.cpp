@@ -150,6 +150,8 @@ class GprSolver
         {
             sigma_ = Teuchos::rcp(new MV(dm.cellMapOverlap, 6));
             sigmaNext_ = Teuchos::rcp(new MV(dm.cellMapOverlap, 6));
+            sigmaPrev_ = Teuchos::rcp(new MV(dm.cellMapOverlap, 6));
+            sigma0_ = Teuchos::rcp(new MV(dm.cellMapOverlap, 6));
             vnode0_ = Teuchos::rcp(new MV(dm.nodeMapOverlap, D));
         }
         if constexpr (P::heat)
@@ -439,6 +441,8 @@ class GprSolver
                     bcValueHost_(g, 0) = (*law)(0.0, 0.0, 0.0, t);
                 Kokkos::deep_copy(bcValue_, bcValueHost_);
             }
+            if constexpr (P::strain)
+                startPicard(step);
             solveNodes();
             if constexpr (P::heat)
             {
@@ -490,7 +494,7 @@ class GprSolver
                     if (attempt > 0)
                     {
                         Tpetra::deep_copy(*vnode_, *vnode0_);
-                        computeAux(); // sigma^n again
+                        Tpetra::deep_copy(*sigma_, *sigma0_);
                     }
                     ok = picard(dt, iterations, picardFailure);
                 }
@@ -523,7 +527,8 @@ class GprSolver
             }
             if (!picardFailure.empty() && attempt >= scene_.maxRetries)
             {
-                failure = picardFailure;
+                failure = "at t = " + jsonNumber(t) + " after " + std::to_string(attempt) + " halvings of dt: " +
+                          picardFailure;
                 break;
             }
             if (!(check.minVolumeRatio > 0.0 && check.minSound2 > 0.0))
@@ -699,6 +704,28 @@ class GprSolver
         computeEos<D, P>(s, cellMaterial_, materials_, aux_, m_.nCells, sigma);
     }
 
+    /*! First Picard iterate of a step: sigma^0 = 2 sigma^n - sigma^{n-1}, linear extrapolation in time (the steps grow
+     *  by at most 10%), which saves one or two iterations over sigma^0 = sigma^n; the fixed point does not depend on
+     *  it. Kept in sigma0_ for a retry. On all local cells, so ghosts need no exchange. */
+    void startPicard(long step)
+    {
+        auto sigma = sigma_->getLocalViewDevice(Tpetra::Access::ReadWrite);
+        auto prev = sigmaPrev_->getLocalViewDevice(Tpetra::Access::ReadWrite);
+        const bool extrapolate = step > 0;
+        auto start = KOKKOS_LAMBDA(const LO i)
+        {
+            for (int c = 0; c < 6; ++c)
+            {
+                const double s = sigma(i, c);
+                if (extrapolate)
+                    sigma(i, c) = 2.0 * s - prev(i, c);
+                prev(i, c) = s;
+            }
+        };
+        Kokkos::parallel_for("unilag::gpr::picard_start", range(m_.nCells), start);
+        Tpetra::deep_copy(*sigma0_, *sigma_);
+    }
+
     //! Nodal solve at owned nodes with T = -p^n I + sigma_ (strain), then node velocities to all local nodes.
     void solveNodes()
     {
@@ -716,14 +743,14 @@ class GprSolver
         vnode_->doImport(*owned, *mesh_->nodeImporter, Tpetra::INSERT);
     }
 
-    /*! Picard loop of gpr.md 2.4 for a step dt: vnode_ holds the nodal solution for sigma_ = sigma^n. Each
+    /*! Picard loop of gpr.md 2.4 for a step dt: vnode_ holds the nodal solution for sigma_ = sigma^0. Each
      *  iteration moves the nodes, updates G_e implicitly (strainUpdate, G^{l+1} into stateNew_) and, unless the
      *  stress has converged, solves the nodes again with sigma^{l+1}. On success vnode_ and sigma_ are the
      *  consistent pair the cell update needs (the forces at each node then balance exactly). Collective. */
     bool picard(double dt, int& iterations, std::string& failure)
     {
         const auto& dm = *mesh_;
-        double change = 0.0;
+        double change = 0.0, prevChange = 0.0, omega = 1.0;
         for (int l = 0; l < scene_.picardMaxIterations; ++l)
         {
             iterations = l + 1;
@@ -757,6 +784,30 @@ class GprSolver
                 return true;
             if (l + 1 == scene_.picardMaxIterations)
                 break;
+            // Damping. The iteration map sigma -> v(sigma) -> sigma' has the Jacobian -K C^T M^{-1} C (K the
+            // stiffness dt rho c_sh^2, C the corner vectors, M the nodal impedance matrices): real eigenvalues in
+            // [-kappa, 0], kappa ~ CFL (c_sh / a)^2 times a mesh factor, which can exceed 1 on fine meshes. Plain
+            // Picard then diverges; sigma <- sigma + omega (sigma' - sigma) with omega = 2 / (2 + kappa) contracts by
+            // kappa / (2 + kappa) < 1 for any kappa. kappa is estimated from the observed contraction of the residual.
+            if (l >= 1 && change > 0.5 * prevChange)
+            {
+                const double r = change / prevChange;
+                const double kappa = omega == 1.0 ? r : (r + 1.0) / omega - 1.0;
+                omega = std::max(0.2, std::min(omega, 2.0 / (2.0 + std::max(kappa, 0.0))));
+            }
+            prevChange = change;
+            if (omega < 1.0)
+            {
+                auto so = sigma_->getLocalViewDevice(Tpetra::Access::ReadOnly);
+                auto snext = sigmaNext_->getLocalViewDevice(Tpetra::Access::ReadWrite);
+                const double w = omega;
+                auto damp = KOKKOS_LAMBDA(const LO i)
+                {
+                    for (int c = 0; c < 6; ++c)
+                        snext(i, c) = so(i, c) + w * (snext(i, c) - so(i, c));
+                };
+                Kokkos::parallel_for("unilag::gpr::picard_damping", range(m_.nOwnedCells), damp);
+            }
             std::swap(sigma_, sigmaNext_);
             {
                 ScopedTimer timer(timers_.halo);
@@ -1083,7 +1134,8 @@ class GprSolver
     int rank_ = 0, size_ = 1;
     MeshView<D> m_;
     Teuchos::RCP<MV> state_, stateNew_, x_, xNew_, vnode_;
-    Teuchos::RCP<MV> sigma_, sigmaNext_, vnode0_; //!< strain: Picard stress iterates, nodal solution for sigma^n
+    Teuchos::RCP<MV> sigma_, sigmaNext_, vnode0_; //!< strain: Picard stress iterates, nodal solution for sigma^0
+    Teuchos::RCP<MV> sigmaPrev_, sigma0_;         //!< strain: sigma^{n-1}; the first iterate sigma^0
     Field fnode_, aux_;
     Field heatRate_; //!< heat: m dE/dt and m dJ/dt of the fluxes at t^n (owned cells)
     long picardTotal_ = 0;

@@ -11,6 +11,8 @@ import h5py
 import numpy as np
 
 FIELDS = ["density", "pressure", "velocity", "specific_internal_energy", "volume"]
+# GPR fields, compared when the first run has them (strain / heat variants)
+OPTIONAL = ["G", "von_mises_stress", "temperature", "thermal_impulse"]
 
 
 def last_dump(d):
@@ -19,7 +21,8 @@ def last_dump(d):
         sys.exit(f"compare_runs: no unilag_*.h5 in {d}")
     with h5py.File(files[-1], "r") as f:
         order = np.argsort(f["global_id"][:, 0])
-        return files[-1], {k: f[k][...][order] for k in FIELDS}
+        keys = FIELDS + [k for k in OPTIONAL if k in f]
+        return files[-1], {k: f[k][...][order] for k in keys}
 
 
 def main():
@@ -28,7 +31,9 @@ def main():
     worst = 0.0
     for d in sys.argv[3:]:
         name, other = last_dump(d)
-        for k in FIELDS:
+        for k in ref:
+            if k not in other:
+                sys.exit(f"compare_runs: {k} is in {ref_name} but not in {name}")
             if other[k].shape != ref[k].shape:
                 sys.exit(f"compare_runs: {k}: shape {other[k].shape} in {name} vs {ref[k].shape} in {ref_name}")
             scale = max(np.abs(ref[k]).max(), 1e-300)
