@@ -60,7 +60,6 @@ def timoshenko():
 
     w_eb = euler_bernoulli()
     ws = np.linspace(0.5 * w_eb, 1.05 * w_eb, 400)
-    d = np.array([det(w).real for w in ws])
     dd = np.array([det(w) for w in ws])
     # the determinant is real up to a phase that depends on the root ordering; use the phase-free |.| minimum
     mag = np.abs(dd)
@@ -125,7 +124,7 @@ def fem(nx, ny):
     modes = Li.T @ V
     X = np.tile(xs, NY)
     for k in range(len(w2)):
-        if w2[k] <= 1e-6 * w2[-1] * 1e-3:
+        if w2[k] <= 1e-9 * w2[-1]:  # rigid-body modes
             continue
         vy = modes[1::2, k]
         ux = modes[0::2, k]
