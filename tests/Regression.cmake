@@ -137,3 +137,41 @@ set_tests_properties(gpr3d_agree PROPERTIES FIXTURES_REQUIRED gpr3d LABELS "gpr;
 add_test(NAME picard_cap_diagnosis COMMAND bash ${SCRIPTS}/expect_unstable.sh ${WORK}/picard_cap
          -- ${UNILAG} run ${SCENES}/traction_wave.yaml --quiet --set scheme.picard_max_iterations=2 --set time.max_retries=3)
 set_tests_properties(picard_cap_diagnosis PROPERTIES LABELS "gpr;regression" PASS_REGULAR_EXPRESSION "Picard loop did not converge in 2 iterations(.|\n)*expect_unstable: PASS")
+
+# Full GPR model (gpr.md 3.4-3.9). The exact-solution code of the two convergence scripts checks itself first.
+add_test(NAME exact_solutions_selftest COMMAND bash -c
+         "${PYTHON} ${SCRIPTS}/viscous_shock.py --selftest && ${PYTHON} ${SCRIPTS}/heat_conduction.py --selftest")
+# Mach-2 viscous shock (mu = 2e-2, Pr = 3/4): L1(density) against the Becker profile decreases over three meshes.
+add_test(NAME viscous_shock_becker
+         COMMAND ${PYTHON} ${SCRIPTS}/viscous_shock.py ${UNILAG} ${INPUTS}/viscous_shock2d.yaml ${WORK})
+# Isobaric temperature step: L1(temperature) against the Fourier solution decreases over three meshes.
+add_test(NAME heat_conduction_fourier
+         COMMAND ${PYTHON} ${SCRIPTS}/heat_conduction.py ${UNILAG} ${INPUTS}/heat_conduction2d.yaml ${WORK})
+# Beryllium shell collapse at V0 = 417.1, 454.7, 490.2 m/s (thin-wedge meshes of 1.4, 1 and 0.7 mm, --check): the final
+# inner radius converges (order ~0.9) and its extrapolation is within 3 % of 5, 4.5, 4 cm. About 70-100 s each.
+add_test(NAME be_shell2d COMMAND ${PYTHON} ${SCRIPTS}/shell_collapse.py ${UNILAG} ${INPUTS}/be_shell2d.yaml ${WORK} 0.05)
+add_test(NAME be_shell2d_v454
+         COMMAND ${PYTHON} ${SCRIPTS}/shell_collapse.py ${UNILAG} ${INPUTS}/be_shell2d_v454.yaml ${WORK} 0.045)
+add_test(NAME be_shell2d_v490
+         COMMAND ${PYTHON} ${SCRIPTS}/shell_collapse.py ${UNILAG} ${INPUTS}/be_shell2d_v490.yaml ${WORK} 0.04)
+# Elastic beryllium plate: period of the first bending mode within 3 % of the plane-strain reference
+# (28.89 us, tests/scripts/plate_reference_period.py). Right half with a symmetry plane at x = 0, 0.25 mm, ~45 s.
+add_test(NAME be_plate_run COMMAND ${UNILAG} run ${INPUTS}/be_plate2d.yaml --quiet --check
+         --set mesh.geometry=geometry/plate_half2d.geo --set boundaries.left.type=symmetry --set mesh.size=0.00025
+         --set time.end=55e-6 --output ${WORK}/be_plate)
+set_tests_properties(be_plate_run PROPERTIES FIXTURES_SETUP be_plate)
+add_test(NAME be_plate_period COMMAND ${PYTHON} ${SCRIPTS}/plate_period.py ${WORK}/be_plate 28.89e-6 0.03)
+set_tests_properties(be_plate_period PROPERTIES FIXTURES_REQUIRED be_plate)
+# tau1 from 1e-14 to 1e14: conservation, isotropic G in the fluid limit, det G = (rho/rho0)^2 in the elastic one.
+add_test(NAME tau1_sweep COMMAND ${PYTHON} ${SCRIPTS}/tau1_sweep.py ${UNILAG} ${SCENES}/tau1_sweep.yaml ${WORK})
+# Two plastic materials (copper on aluminium, conformal interface): np 1 and 2 give the same fields.
+foreach(np 1 2)
+  add_test(NAME impact2d_np${np} COMMAND ${MPI_RUN} ${np} ${UNILAG} run ${INPUTS}/impact2d.yaml --quiet --check
+           --output ${WORK}/impact2d_np${np})
+  set_tests_properties(impact2d_np${np} PROPERTIES ENVIRONMENT "OMP_NUM_THREADS=1" FIXTURES_SETUP impact2d
+                       LABELS "mpi;regression;gpr" PROCESSORS ${np})
+endforeach()
+add_test(NAME impact2d_agree COMMAND ${PYTHON} ${SCRIPTS}/compare_runs.py 1e-12 ${WORK}/impact2d_np1 ${WORK}/impact2d_np2)
+set_tests_properties(impact2d_agree PROPERTIES FIXTURES_REQUIRED impact2d LABELS "mpi;regression;gpr")
+set_tests_properties(exact_solutions_selftest viscous_shock_becker heat_conduction_fourier be_shell2d be_shell2d_v454
+                     be_shell2d_v490 be_plate_run be_plate_period tau1_sweep PROPERTIES LABELS "regression;gpr")

@@ -1,0 +1,20 @@
+// Right half, 0 <= x <= 3 cm, of the beryllium plate of plate2d.geo ([-3, 3] x [-0.5, 0.5] cm), in metres. The first
+// bending mode is symmetric about x = 0 (v_x odd, v_y even), so a symmetry boundary on the left side (group "left",
+// to be given type symmetry) gives the full plate's motion at half the cost. The mesh size comes from the scene
+// (mesh.size); structured (transfinite, alternating diagonals).
+Point(1) = {0, -0.005, 0};
+Point(2) = {0.03, -0.005, 0};
+Point(3) = {0.03, 0.005, 0};
+Point(4) = {0, 0.005, 0};
+Line(1) = {1, 2};
+Line(2) = {2, 3};
+Line(3) = {3, 4};
+Line(4) = {4, 1};
+Curve Loop(1) = {1, 2, 3, 4};
+Plane Surface(1) = {1};
+Transfinite Surface{1} Alternate;
+Physical Curve("bottom") = {1};
+Physical Curve("right") = {2};
+Physical Curve("top") = {3};
+Physical Curve("left") = {4};
+Physical Surface("plate") = {1};
