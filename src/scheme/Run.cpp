@@ -615,7 +615,11 @@ class GprSolver
         double dp = 0.0;
         for (int d = 0; d < D; ++d)
             dp += std::pow(final_[1 + d] - initial[1 + d] - impulse[d], 2);
-        const double momentumChange = std::sqrt(dp) / std::max(final_[2 + D] + initial[2 + D], 1e-300);
+        // relative to the momentum in play: sum m|v|, or for a body nearly at rest sqrt(2 M E), the momentum its
+        // energy could give it (the forces whose round-off this measures scale with it)
+        const double momentumScale =
+            std::max(final_[2 + D] + initial[2 + D], std::sqrt(2.0 * initial[0] * std::abs(initial[1 + D])));
+        const double momentumChange = std::sqrt(dp) / std::max(momentumScale, 1e-300);
         // relative to the largest energy in play (a body at rest hit by a piston starts with none)
         const double energyScale = std::max({std::abs(initial[1 + D]), std::abs(final_[1 + D]), std::abs(work)});
         const double energyChange = std::abs(final_[1 + D] - initial[1 + D] - work) / std::max(energyScale, 1e-300);
