@@ -611,6 +611,8 @@ KOKKOS_INLINE_FUNCTION Sym3 relaxStrain(const Sym3& G, double dt, double tau1)
  *  stress; for k dt -> 0 it agrees with the splitting to O(k dt^2). */
 KOKKOS_INLINE_FUNCTION Sym3 transportAndRelax(const Sym3& G0, const Sym3& dT, double dt, double tau1)
 {
+    if (!(tau1 < infinity()))
+        return G0 + dT; // elastic: no relaxation to evaluate
     const Sym3 Gi = G0 + identity(trace(dT) / 3.0);
     const double kdt = strainRelaxationRate(Gi, tau1) * dt;
     if (!(kdt > 0.0))
