@@ -510,11 +510,12 @@ class GprSolver
                 {
                     ScopedTimer timer(timers_.update);
                     auto x = x_->getLocalViewDevice(Tpetra::Access::ReadOnly);
-                    auto xn = xNew_->getLocalViewDevice(Tpetra::Access::OverwriteAll);
+                    auto xn = xNew_->getLocalViewDevice(Tpetra::Access::ReadWrite);
                     auto v = vnode_->getLocalViewDevice(Tpetra::Access::ReadOnly);
                     auto s = state_->getLocalViewDevice(Tpetra::Access::ReadOnly);
                     auto sn = stateNew_->getLocalViewDevice(Tpetra::Access::ReadWrite);
-                    moveNodes(x, v, dt, xn, m_.nNodes, D);
+                    if constexpr (!P::strain)
+                        moveNodes(x, v, dt, xn, m_.nNodes, D); // (the converged Picard iterate has already moved them)
                     ConstField sigma;
                     if constexpr (P::strain)
                         sigma = sigma_->getLocalViewDevice(Tpetra::Access::ReadOnly);
