@@ -32,11 +32,15 @@ template <int D>
 struct Simplex
 {
     static constexpr int NV = D + 1;
-    Vec<D> c[NV];  //!< corner vectors
-    double volume; //!< signed measure |T|
+    Vec<D> c[NV];    //!< corner vectors
+    double volume;   //!< signed measure |T|
+    Vec<D> centroid; //!< mean of the vertices (the reconstruction's expansion point)
 
     KOKKOS_INLINE_FUNCTION explicit Simplex(const Vec<D> (&x)[NV])
     {
+        centroid = Vec<D>::zero();
+        for (int k = 0; k < NV; ++k)
+            centroid = centroid + (1.0 / NV) * x[k];
         if constexpr (D == 2)
         {
             // c_k = 1/2 perp(x_{k+1} - x_{k-1}), perp(a) = (a_y, -a_x)
@@ -96,11 +100,12 @@ struct CellGeometry
     View<double*> volume;  //!< |T_i|
     View<double*> length;  //!< characteristic length h_i
     Field corner;          //!< cell x (NV*D): component d of c_k in column k*D + d
+    Field centroid;        //!< cell x D: vertex mean
 
     CellGeometry() = default;
     CellGeometry(LO nCells, int dim)
         : volume("unilag::volume", nCells), length("unilag::length", nCells),
-          corner("unilag::corner", nCells, (dim + 1) * dim)
+          corner("unilag::corner", nCells, (dim + 1) * dim), centroid("unilag::centroid", nCells, dim)
     {
     }
 };
@@ -111,6 +116,8 @@ KOKKOS_INLINE_FUNCTION void storeGeometry(const CellGeometry& g, LO i, const Sim
 {
     g.volume(i) = s.volume;
     g.length(i) = s.charLength();
+    for (int d = 0; d < D; ++d)
+        g.centroid(i, d) = s.centroid[d];
     for (int k = 0; k < D + 1; ++k)
         for (int d = 0; d < D; ++d)
             g.corner(i, k * D + d) = s.c[k][d];

@@ -19,6 +19,7 @@
 #include "unilag/Geometry.hpp"
 #include "unilag/Gpr.hpp"
 #include "unilag/Physics.hpp"
+#include "unilag/Reconstruction.hpp"
 #include "unilag/Reduce.hpp"
 
 namespace unilag
@@ -122,11 +123,10 @@ KOKKOS_INLINE_FUNCTION Mat<D> subcellMatrix(const Field& corner, LO i, int k)
     return M;
 }
 
-/*! \brief Shear-stress part of the traction on a corner: sigma c (the D x D block of the Sym3 stress row). */
+/*! \brief Shear-stress part of the traction on a corner: sigma c (the D x D block of the Sym3 stress). */
 template <int D>
-KOKKOS_INLINE_FUNCTION Vec<D> stressTimes(const ConstField& stress, LO i, const Vec<D>& c)
+KOKKOS_INLINE_FUNCTION Vec<D> stressTimes(const gpr::Sym3& s, const Vec<D>& c)
 {
-    const gpr::Sym3 s = loadSym3(stress, i, 0);
     Vec<D> r;
     if constexpr (D == 2)
     {
@@ -142,14 +142,53 @@ KOKKOS_INLINE_FUNCTION Vec<D> stressTimes(const ConstField& stress, LO i, const 
     return r;
 }
 
+//! sigma_i c for the Sym3 stress row i of a field.
+template <int D>
+KOKKOS_INLINE_FUNCTION Vec<D> stressTimes(const ConstField& stress, LO i, const Vec<D>& c)
+{
+    return stressTimes<D>(loadSym3(stress, i, 0), c);
+}
+
+/*! \brief Velocity, pressure and shear stress (strain) of cell i at its node r: the cell values, plus the limited
+ *  linear reconstruction at second order (rec active). Used alike by the nodal solver and the subcell forces. */
+template <int D, class P>
+KOKKOS_INLINE_FUNCTION void cornerValues(const ConstField& state, const ConstField& aux, const ConstField& stress,
+                                         const Reconstruction<D>& rec, LO i, LO r, Vec<D>& v, double& p,
+                                         gpr::Sym3& sigma)
+{
+    using S = StateLayout<D, P>;
+    using R = ReconLayout<D, P>;
+    for (int d = 0; d < D; ++d)
+        v[d] = state(i, S::vel + d);
+    p = aux(i, Aux::pressure);
+    if constexpr (P::strain)
+        sigma = loadSym3(stress, i, 0);
+    if (rec.active())
+    {
+        const Vec<D> dx = rec.offset(i, r);
+        for (int d = 0; d < D; ++d)
+            v[d] += rec.delta(i, R::vel + d, dx);
+        p += rec.delta(i, R::pressure, dx);
+        if constexpr (P::strain)
+        {
+            sigma.xx += rec.delta(i, R::stress + 0, dx);
+            sigma.yy += rec.delta(i, R::stress + 1, dx);
+            sigma.zz += rec.delta(i, R::stress + 2, dx);
+            sigma.xy += rec.delta(i, R::stress + 3, dx);
+            sigma.xz += rec.delta(i, R::stress + 4, dx);
+            sigma.yz += rec.delta(i, R::stress + 5, dx);
+        }
+    }
+}
+
 /*! \brief Nodal solver at owned nodes: node velocity v_r and the net force sum_i f_ri it exerts on the fluid
  *  (non-zero only where a boundary condition acts; used for the momentum and energy balance).
  *  T_i = -p_i I + sigma_i with sigma from `stress` (strain variants; the Picard iterate). */
 template <int D, class P = PhysicsHydro>
 void nodalSolve(const MeshView<D>& mesh, const BoundaryView& bc, const ConstField& state, const ConstField& aux,
-                const CellGeometry& geom, const Field& vnode, const Field& fnode, const ConstField& stress = ConstField())
+                const CellGeometry& geom, const Field& vnode, const Field& fnode, const ConstField& stress = ConstField(),
+                const Reconstruction<D>& rec = Reconstruction<D>())
 {
-    using S = StateLayout<D, P>;
     constexpr int NV = D + 1;
     auto corner = geom.corner;
     auto solve_node = KOKKOS_LAMBDA(const LO r)
@@ -170,11 +209,12 @@ void nodalSolve(const MeshView<D>& mesh, const BoundaryView& bc, const ConstFiel
             const LO i = cid / NV;
             const int k = cid % NV;
             const double z = aux(i, Aux::impedance);
-            const double p = aux(i, Aux::pressure);
+            double p;
+            gpr::Sym3 sigma;
+            Vec<D> vi;
+            cornerValues<D, P>(state, aux, stress, rec, i, r, vi, p, sigma);
             Mat<D> Mik = subcellMatrix<D>(corner, i, k);
-            Vec<D> vi, ck = cornerVec<D>(corner, i, k);
-            for (int d = 0; d < D; ++d)
-                vi[d] = state(i, S::vel + d);
+            const Vec<D> ck = cornerVec<D>(corner, i, k);
             const Vec<D> Mv = Mik * vi;
             for (int a = 0; a < D; ++a)
             {
@@ -183,7 +223,7 @@ void nodalSolve(const MeshView<D>& mesh, const BoundaryView& bc, const ConstFiel
                     M.a[a][e] += z * Mik.a[a][e];
             }
             if constexpr (P::strain)
-                b = b - stressTimes<D>(stress, i, ck);
+                b = b - stressTimes<D>(sigma, ck);
             for (int j = 0; j < NV; ++j)
             {
                 const int g = (j == k) ? -1 : mesh.cellFaceGroup(i, j);
@@ -352,19 +392,26 @@ struct PicardCheck
  *  stiff relaxation over dt (transportAndRelax: exponential, with the Navier-Stokes limit; the plastic law relaxes
  *  G^n + dT with tau1 consistent with the result, relaxPlasticStrain), and sigma^{l+1} = sigma(rho^{l+1}, G^{l+1}).
  *  Writes G^{l+1} into stateNew and sigma^{l+1} into sigmaNew; sigmaOld is the iterate the nodal solve used.
- *  plasticHint (plastic variant, one per cell, NaN = none) carries each cell's plastic-flow parameter between calls. */
+ *  plasticHint (plastic variant, one per cell, NaN = none) carries each cell's plastic-flow parameter between calls.
+ *  Second order (midpoint corrector): fluxState and fluxGeom, if given, are the midpoint state and configuration,
+ *  so that dT = -dt (G^{n+1/2} L^{n+1/2} + L^T G^{n+1/2}) with L from the midpoint corner vectors; the relaxation
+ *  still starts from G^n and spans dt. */
 template <int D, class P>
 PicardCheck strainUpdate(const MeshView<D>& mesh, const ConstField& state, const ConstField& aux,
                          const CellGeometry& geom, const View<const double*>& mass, const View<const int*>& cellMaterial,
                          const View<const Material*>& materials, const ConstField& xNew, const ConstField& vnode,
                          double dt, const ConstField& sigmaOld, const Field& sigmaNew, const Field& stateNew,
-                         const View<double*>& plasticHint = View<double*>())
+                         const View<double*>& plasticHint = View<double*>(), const ConstField& fluxState = ConstField(),
+                         const CellGeometry& fluxGeom = CellGeometry())
 {
     static_assert(P::strain, "strainUpdate is for the strain variants");
     using S = StateLayout<D, P>;
     constexpr int NV = D + 1;
-    auto corner = geom.corner;
+    const bool midpoint = fluxState.extent(0) > 0;
+    auto corner = midpoint ? fluxGeom.corner : geom.corner;
     auto volume = geom.volume;
+    auto fluxVolume = midpoint ? fluxGeom.volume : geom.volume;
+    auto transported = midpoint ? fluxState : state;
     auto update = KOKKOS_LAMBDA(const LO i, double (&ext)[3])
     {
         const Material& m = materials(cellMaterial(i));
@@ -384,7 +431,7 @@ PicardCheck strainUpdate(const MeshView<D>& mesh, const ConstField& state, const
         {
             const double rho = mass(i) / sNew.volume;
             Mat<3> L = Mat<3>::zero();
-            const double inv = 1.0 / volume(i);
+            const double inv = 1.0 / fluxVolume(i);
             for (int k = 0; k < NV; ++k)
             {
                 const LO r = mesh.cellNodes(i, k);
@@ -392,7 +439,7 @@ PicardCheck strainUpdate(const MeshView<D>& mesh, const ConstField& state, const
                     for (int b = 0; b < D; ++b)
                         L.a[a][b] += vnode(r, a) * corner(i, k * D + b) * inv;
             }
-            const gpr::Sym3 dT = (-dt) * gpr::transportRate(G0, L);
+            const gpr::Sym3 dT = (-dt) * gpr::transportRate(midpoint ? loadSym3(transported, i, S::G) : G0, L);
             gpr::Sym3 G;
             if constexpr (P::plastic)
                 G = m.strainLaw == StrainPlastic
@@ -429,8 +476,23 @@ struct UpdateCheck
     LO worstCell;          //!< a cell with the smallest volume ratio or internal energy (-1 if none bad)
 };
 
+/*! The state the subcell forces of a step are computed from, if it is not the state being updated: at second order
+ *  the midpoint state, its configuration, shear stress and reconstruction (the corrector of the midpoint rule). */
+template <int D>
+struct CellFlux
+{
+    ConstField state;      //!< flux state (velocity)
+    ConstField aux;        //!< its pressure and impedance
+    ConstField stress;     //!< its shear stress (strain variants)
+    CellGeometry geom;     //!< corner vectors of the flux configuration
+    Reconstruction<D> rec; //!< limited gradients on that configuration (inactive: first order)
+};
+
 /*! \brief Conservative update of owned cells from the subcell forces (2b, 2c) and the Simpson GCL (2a),
  *  writing stateNew. Returns the validity extrema.
+ *   - forces f_ri = T_i(x_r) c_ri + M_ri (v_r - v_i(x_r)) from the flux state (flux, if given: the midpoint of a
+ *     second-order step, with its reconstruction; otherwise state, aux, geom and stress at first order); the
+ *     velocities vnode are the nodal solution for that state, and xNew = x + dt vnode.
  *   - strain: T = -p I + sigma with sigma the stress of the last nodal solve (`stress`, so that the forces at a
  *     node balance exactly); G^{n+1} is already in stateNew (strainUpdate) and is not touched here.
  *   - heat: E gains dt/m heatRate(i, 0); J^{n+1} = (J^n + dt/m heatRate(i, 1..D)) / (1 + dt rho0 theta^n /
@@ -442,20 +504,25 @@ UpdateCheck updateCells(const MeshView<D>& mesh, const ConstField& state, const 
                         const View<const Material*>& materials, const ConstField& x, const ConstField& xNew,
                         const ConstField& vnode, double dt, const Field& stateNew,
                         const ConstField& stress = ConstField(), const ConstField& heatRate = ConstField(),
-                        const CellGeometry& geomNew = CellGeometry())
+                        const CellGeometry& geomNew = CellGeometry(), const CellFlux<D>& flux = CellFlux<D>())
 {
     using S = StateLayout<D, P>;
     constexpr int NV = D + 1;
     auto corner = geom.corner;
     auto volume = geom.volume;
     const bool storeNew = geomNew.volume.extent(0) > 0;
+    const bool separate = flux.state.extent(0) > 0;
+    const ConstField fState = separate ? flux.state : state;
+    const ConstField fAux = separate ? flux.aux : aux;
+    const ConstField fStress = separate ? flux.stress : stress;
+    const Field fCorner = separate ? flux.geom.corner : geom.corner;
+    const Reconstruction<D> rec = flux.rec;
     auto update = KOKKOS_LAMBDA(const LO i, double (&ext)[4])
     {
         Vec<D> vi;
         for (int d = 0; d < D; ++d)
             vi[d] = state(i, S::vel + d);
-        const double z = aux(i, Aux::impedance);
-        const double p = aux(i, Aux::pressure);
+        const double z = fAux(i, Aux::impedance);
         Vec<D> xm[NV], xn[NV], vr[NV];
         for (int k = 0; k < NV; ++k)
         {
@@ -471,16 +538,20 @@ UpdateCheck updateCells(const MeshView<D>& mesh, const ConstField& state, const 
         if (storeNew)
             storeGeometry<D>(geomNew, i, sNew); // the next step's geometry of owned cells, at no extra cost
         Vec<D> force = Vec<D>::zero();
-        double power = 0.0, flux = 0.0;
+        double power = 0.0, gclFlux = 0.0;
         for (int k = 0; k < NV; ++k)
         {
-            const Vec<D> ck = cornerVec<D>(corner, i, k);
-            Vec<D> f = (-p) * ck + z * (subcellMatrix<D>(corner, i, k) * (vr[k] - vi));
+            double pk;
+            gpr::Sym3 sk;
+            Vec<D> vk;
+            cornerValues<D, P>(fState, fAux, fStress, rec, i, mesh.cellNodes(i, k), vk, pk, sk);
+            const Vec<D> ck = cornerVec<D>(fCorner, i, k);
+            Vec<D> f = (-pk) * ck + z * (subcellMatrix<D>(fCorner, i, k) * (vr[k] - vk));
             if constexpr (P::strain)
-                f = f + stressTimes<D>(stress, i, ck);
+                f = f + stressTimes<D>(sk, ck);
             force = force + f;
             power += dot(f, vr[k]);
-            flux += dot(vr[k], ck + 4.0 * sMid.c[k] + sNew.c[k]);
+            gclFlux += dot(vr[k], cornerVec<D>(corner, i, k) + 4.0 * sMid.c[k] + sNew.c[k]);
         }
         const double dtm = dt / mass(i);
         Vec<D> v;
@@ -494,7 +565,7 @@ UpdateCheck updateCells(const MeshView<D>& mesh, const ConstField& state, const 
         // (2a) with Simpson's rule is exact for linear trajectories: the GCL volume must equal the geometric
         // one up to this step's round-off. Store the geometric one (as the paper's Picard loop does), so that
         // round-off does not accumulate over the steps, and report the one-step defect.
-        const double omegaGcl = state(i, S::omega) + dtm * flux / 6.0;
+        const double omegaGcl = state(i, S::omega) + dtm * gclFlux / 6.0;
         const double omega = sNew.volume / mass(i);
         const double rhoNew = 1.0 / omega;
         gpr::Sym3 G = gpr::identity(1.0);

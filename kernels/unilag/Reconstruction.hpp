@@ -1,0 +1,164 @@
+/*! \file Reconstruction.hpp
+ *  \brief Second order in space (gpr.md 2.5): a limited linear reconstruction w_i(x) = w_i + phi_i grad w_i . (x - x_i)
+ *  of the velocity, the pressure and (strain variants) the shear stress of each cell, which the nodal solver and the
+ *  subcell forces evaluate at the nodes x_r instead of the cell values.
+ *   - Gradient: weighted least squares over the node-neighbour stencil (every cell that shares a node with cell i,
+ *     weights 1/|x_j - x_i|^2, a face neighbour counted once per shared node). The stencil is local for every owned
+ *     cell (DistributedMesh's ghost layer); ghost cells receive their gradients by one halo exchange.
+ *   - Limiter: Barth-Jespersen at the vertices, per component, with the extrema over the same stencil, so that the
+ *     reconstructed node values stay within the neighbouring cell values (no new extrema, first order at shocks).
+ *  Sums run over the node -> corner CSR, sorted by global cell id: results are independent of the partition and the
+ *  thread count, bit for bit.
+ */
+#pragma once
+
+#include "unilag/Geometry.hpp"
+#include "unilag/Physics.hpp"
+
+namespace unilag
+{
+
+//! Reconstructed quantities and their columns in the gradient field (quantity q, direction d: column q * D + d).
+template <int D, class P>
+struct ReconLayout
+{
+    static constexpr int vel = 0;                            //!< velocity, D quantities
+    static constexpr int pressure = D;                       //!< pressure
+    static constexpr int stress = D + 1;                     //!< shear stress as Sym3, 6 quantities (strain only)
+    static constexpr int nq = D + 1 + (P::strain ? 6 : 0);   //!< number of reconstructed quantities
+    static constexpr int ncomp = nq * D;                     //!< columns of the gradient field
+};
+
+/*! What the flux kernels need to evaluate a reconstruction: the limited gradients (empty: first order), and the node
+ *  positions and cell centroids of the configuration the fluxes are computed on. */
+template <int D>
+struct Reconstruction
+{
+    ConstField grad;     //!< cells x ReconLayout::ncomp
+    ConstField x;        //!< node positions
+    ConstField centroid; //!< cell centroids (CellGeometry::centroid)
+
+    KOKKOS_INLINE_FUNCTION bool active() const { return grad.extent(0) > 0; }
+
+    //! x_r - x_i for node r of cell i.
+    KOKKOS_INLINE_FUNCTION Vec<D> offset(LO i, LO r) const
+    {
+        Vec<D> d;
+        for (int a = 0; a < D; ++a)
+            d[a] = x(r, a) - centroid(i, a);
+        return d;
+    }
+
+    //! grad w_q . dx in cell i.
+    KOKKOS_INLINE_FUNCTION double delta(LO i, int q, const Vec<D>& dx) const
+    {
+        double s = 0.0;
+        for (int a = 0; a < D; ++a)
+            s += grad(i, q * D + a) * dx[a];
+        return s;
+    }
+};
+
+//! The reconstructed quantities of cell j: velocity, pressure, shear stress (strain).
+template <int D, class P>
+KOKKOS_INLINE_FUNCTION void reconValues(const ConstField& state, const ConstField& aux, const ConstField& stress, LO j,
+                                        double (&w)[ReconLayout<D, P>::nq])
+{
+    using S = StateLayout<D, P>;
+    using R = ReconLayout<D, P>;
+    for (int d = 0; d < D; ++d)
+        w[R::vel + d] = state(j, S::vel + d);
+    w[R::pressure] = aux(j, Aux::pressure);
+    if constexpr (P::strain)
+        for (int c = 0; c < 6; ++c)
+            w[R::stress + c] = stress(j, c);
+}
+
+/*! \brief Limited gradients of the owned cells (gpr.md 2.5) into grad (cells x ReconLayout::ncomp), from the cell
+ *  values of all local cells (state and aux current for ghosts too, stress: the shear stress, strain variants) on
+ *  the configuration x with geometry geom (centroids of all local cells). */
+template <int D, class P>
+void limitedGradients(const MeshView<D>& mesh, const ConstField& state, const ConstField& aux,
+                      const ConstField& stress, const CellGeometry& geom, const ConstField& x, const Field& grad)
+{
+    using R = ReconLayout<D, P>;
+    constexpr int NV = D + 1;
+    constexpr int NQ = R::nq;
+    auto centroid = geom.centroid;
+    auto gradient = KOKKOS_LAMBDA(const LO i)
+    {
+        double wi[NQ], wj[NQ], wmin[NQ], wmax[NQ];
+        Vec<D> rhs[NQ];
+        reconValues<D, P>(state, aux, stress, i, wi);
+        for (int q = 0; q < NQ; ++q)
+        {
+            wmin[q] = wmax[q] = wi[q];
+            rhs[q] = Vec<D>::zero();
+        }
+        Vec<D> xi;
+        for (int a = 0; a < D; ++a)
+            xi[a] = centroid(i, a);
+        Mat<D> A = Mat<D>::zero();
+        for (int k = 0; k < NV; ++k)
+        {
+            const LO r = mesh.cellNodes(i, k);
+            for (LO c = mesh.nodeCornerOffsets(r); c < mesh.nodeCornerOffsets(r + 1); ++c)
+            {
+                const LO j = mesh.nodeCorners(c) / NV;
+                if (j == i)
+                    continue;
+                Vec<D> d;
+                for (int a = 0; a < D; ++a)
+                    d[a] = centroid(j, a) - xi[a];
+                const double w = 1.0 / dot(d, d);
+                A.addOuter(w, d);
+                reconValues<D, P>(state, aux, stress, j, wj);
+                for (int q = 0; q < NQ; ++q)
+                {
+                    const double dw = wj[q] - wi[q];
+                    rhs[q] = rhs[q] + (w * dw) * d;
+                    wmin[q] = Kokkos::Experimental::fmin(wmin[q], wj[q]);
+                    wmax[q] = Kokkos::Experimental::fmax(wmax[q], wj[q]);
+                }
+            }
+        }
+        // A = sum w d d^T is dimensionless (w = 1/|d|^2); a stencil that does not span D directions gives no gradient.
+        double trace = 0.0, det;
+        for (int a = 0; a < D; ++a)
+            trace += A.a[a][a];
+        if constexpr (D == 2)
+            det = A.a[0][0] * A.a[1][1] - A.a[0][1] * A.a[1][0];
+        else
+            det = A.a[0][0] * (A.a[1][1] * A.a[2][2] - A.a[1][2] * A.a[2][1]) -
+                  A.a[0][1] * (A.a[1][0] * A.a[2][2] - A.a[1][2] * A.a[2][0]) +
+                  A.a[0][2] * (A.a[1][0] * A.a[2][1] - A.a[1][1] * A.a[2][0]);
+        const double scale = trace / D;
+        const bool spans = det > 1e-10 * (D == 2 ? scale * scale : scale * scale * scale);
+        Vec<D> dx[NV];
+        for (int k = 0; k < NV; ++k)
+        {
+            const LO r = mesh.cellNodes(i, k);
+            for (int a = 0; a < D; ++a)
+                dx[k][a] = x(r, a) - xi[a];
+        }
+        for (int q = 0; q < NQ; ++q)
+        {
+            const Vec<D> g = spans ? solve(A, rhs[q]) : Vec<D>::zero();
+            // Barth-Jespersen: the largest phi in [0, 1] that keeps every vertex value within [wmin, wmax].
+            double phi = 1.0;
+            for (int k = 0; k < NV; ++k)
+            {
+                const double dw = dot(g, dx[k]);
+                if (dw > 0.0)
+                    phi = Kokkos::Experimental::fmin(phi, (wmax[q] - wi[q]) / dw);
+                else if (dw < 0.0)
+                    phi = Kokkos::Experimental::fmin(phi, (wmin[q] - wi[q]) / dw);
+            }
+            for (int a = 0; a < D; ++a)
+                grad(i, q * D + a) = phi * g[a];
+        }
+    };
+    Kokkos::parallel_for("unilag::recon::limited_gradients", range(mesh.nOwnedCells), gradient);
+}
+
+} // namespace unilag
