@@ -690,6 +690,7 @@ Scene readScene(const std::string& file, const std::vector<std::string>& overrid
         Node sch = root.sub("scheme");
         s.picardTolerance = sch.positive("picard_tolerance", s.picardTolerance);
         s.picardMaxIterations = int(sch.integer("picard_max_iterations", s.picardMaxIterations, 1, 1000000));
+        s.order = int(sch.integer("order", s.order, 1, 2));
         sch.rejectUnknown();
     }
     {

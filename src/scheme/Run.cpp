@@ -21,6 +21,7 @@
 #include "physics/Expression.hpp"
 #include "unilag/Heat.hpp"
 #include "unilag/Hydro.hpp"
+#include "unilag/Reconstruction.hpp"
 
 namespace unilag
 {
@@ -71,7 +72,7 @@ void allSum(MPI_Comm comm, double (&v)[N])
 //! Phase timers (seconds), Laghos style.
 struct Timers
 {
-    double geometry = 0, nodal = 0, strain = 0, heat = 0, update = 0, halo = 0, io = 0;
+    double geometry = 0, nodal = 0, strain = 0, heat = 0, update = 0, halo = 0, io = 0, recon = 0;
 };
 
 class ScopedTimer
@@ -153,17 +154,37 @@ class GprSolver
             sigmaNext_ = Teuchos::rcp(new MV(dm.cellMapOverlap, 6));
             sigmaPrev_ = Teuchos::rcp(new MV(dm.cellMapOverlap, 6));
             sigma0_ = Teuchos::rcp(new MV(dm.cellMapOverlap, 6));
+            if (scene_.order == 2)
+                sigmaPrev2_ = Teuchos::rcp(new MV(dm.cellMapOverlap, 6));
             if constexpr (P::plastic)
             {
                 plasticHint_ = View<double*>("unilag::plasticHint", dm.nOwnedCells);
                 Kokkos::deep_copy(plasticHint_, std::numeric_limits<double>::quiet_NaN());
+                if (scene_.order == 2)
+                {
+                    plasticHintCorrector_ = View<double*>("unilag::plasticHintCorrector", dm.nOwnedCells);
+                    Kokkos::deep_copy(plasticHintCorrector_, std::numeric_limits<double>::quiet_NaN());
+                }
             }
-            vnode0_ = Teuchos::rcp(new MV(dm.nodeMapOverlap, D));
         }
         if constexpr (P::heat)
             heatRate_ = Field("unilag::heatRate", dm.nOwnedCells, 1 + D);
         geom_ = CellGeometry(dm.nCells, D);
         geomNew_ = CellGeometry(dm.nCells, D);
+        if (P::strain || scene_.order == 2)
+            vnode0_ = Teuchos::rcp(new MV(dm.nodeMapOverlap, D));
+        if (scene_.order == 2)
+        {
+            stateMid_ = Teuchos::rcp(new MV(dm.cellMapOverlap, S::ncomp));
+            xMid_ = Teuchos::rcp(new MV(dm.nodeMapOverlap, D));
+            grad_ = Teuchos::rcp(new MV(dm.cellMapOverlap, ReconLayout<D, P>::ncomp));
+            geomMid_ = CellGeometry(dm.nCells, D);
+            auxMid_ = Field("unilag::auxMid", dm.nCells, Aux::ncomp<P>());
+            if constexpr (P::strain)
+                sigmaMid_ = Field("unilag::sigmaMid", dm.nCells, 6);
+            if constexpr (P::heat)
+                heatRateMid_ = Field("unilag::heatRateMid", dm.nOwnedCells, 1 + D);
+        }
         mass_ = View<double*>("unilag::mass", dm.nCells);
         cellMaterial_ = View<int*>("unilag::cellMaterial", dm.nCells);
     }
@@ -440,17 +461,13 @@ class GprSolver
         const bool tty = isatty(fileno(stdout));
         std::string failure;
         const double tEnd = scene_.endTime;
+        const bool order2 = scene_.order == 2;
         while (t < tEnd * (1.0 - 1e-14) && step < scene_.maxSteps)
         {
             // 1. Nodal solve on the configuration at t^n (geometry and EOS are current for all local cells).
-            if (!pressureLaws_.empty())
-            {
-                for (auto& [g, law] : pressureLaws_)
-                    bcValueHost_(g, 0) = (*law)(0.0, 0.0, 0.0, t);
-                Kokkos::deep_copy(bcValue_, bcValueHost_);
-            }
+            setBoundaryTime(t);
             if constexpr (P::strain)
-                startPicard(step);
+                startPicard(step, order2);
             solveNodes();
             if constexpr (P::heat)
             {
@@ -488,23 +505,28 @@ class GprSolver
 
             // 3. Move nodes and update cells; reject steps that invert a cell, make the state inadmissible or
             //    leave the Picard loop unconverged, halving dt (v^0 and sigma^n do not depend on dt).
+            //    Second order: this first-order update over dt/2 is the predictor, and corrector() then takes the
+            //    whole step with the fluxes of the midpoint state.
             UpdateCheck check{};
             int attempt = 0, iterations = 0;
             std::string picardFailure;
-            if constexpr (P::strain)
+            if (vnode0_)
                 Tpetra::deep_copy(*vnode0_, *vnode_);
             for (;; ++attempt)
             {
                 bool ok = true;
                 picardFailure.clear();
+                const double dtFirst = order2 ? 0.5 * dt : dt;
+                if (attempt > 0 && vnode0_)
+                {
+                    Tpetra::deep_copy(*vnode_, *vnode0_);
+                    setBoundaryTime(t);
+                }
                 if constexpr (P::strain)
                 {
                     if (attempt > 0)
-                    {
-                        Tpetra::deep_copy(*vnode_, *vnode0_);
                         Tpetra::deep_copy(*sigma_, *sigma0_);
-                    }
-                    ok = picard(dt, iterations, picardFailure);
+                    ok = picard(dtFirst, iterations, picardFailure);
                 }
                 if (ok)
                 {
@@ -515,20 +537,21 @@ class GprSolver
                     auto s = state_->getLocalViewDevice(Tpetra::Access::ReadOnly);
                     auto sn = stateNew_->getLocalViewDevice(Tpetra::Access::ReadWrite);
                     if constexpr (!P::strain)
-                        moveNodes(x, v, dt, xn, m_.nNodes, D); // (the converged Picard iterate has already moved them)
+                        moveNodes(x, v, dtFirst, xn, m_.nNodes, D); // (the converged Picard iterate has moved them)
                     ConstField sigma;
                     if constexpr (P::strain)
                         sigma = sigma_->getLocalViewDevice(Tpetra::Access::ReadOnly);
-                    check = updateCells<D, P>(m_, s, aux_, geom_, mass_, cellMaterial_, materials_, x, xn, v, dt, sn,
-                                              sigma, heatRate_, geomNew_);
-                    double ext[3] = {-check.minVolumeRatio, -check.minSound2, check.maxGclDefect};
-                    MPI_Allreduce(MPI_IN_PLACE, ext, 3, MPI_DOUBLE, MPI_MAX, comm_);
-                    check.minVolumeRatio = -ext[0];
-                    check.minSound2 = -ext[1];
-                    check.maxGclDefect = ext[2];
-                    if (check.minVolumeRatio > 0.0 && check.minSound2 > 0.0)
-                        break;
+                    check = reduceCheck(updateCells<D, P>(m_, s, aux_, geom_, mass_, cellMaterial_, materials_, x, xn,
+                                                          v, dtFirst, sn, sigma, heatRate_, geomNew_));
                 }
+                ok = ok && check.minVolumeRatio > 0.0 && check.minSound2 > 0.0;
+                if (ok && order2)
+                {
+                    ok = corrector(t, dt, check, picardFailure);
+                    ok = ok && check.minVolumeRatio > 0.0 && check.minSound2 > 0.0;
+                }
+                if (ok)
+                    break;
                 if (attempt >= scene_.maxRetries)
                     break;
                 dt *= 0.5;
@@ -545,6 +568,9 @@ class GprSolver
                 failure = diagnose(check, t, dt, attempt);
                 break;
             }
+            if constexpr (P::strain)
+                if (order2)
+                    notePredictorStress();
             picardTotal_ += iterations;
             picardMax_ = std::max(picardMax_, iterations);
             stepLog(step + 1, t + dt, dt, iterations, attempt);
@@ -670,6 +696,7 @@ class GprSolver
         js << "},\n";
         js << "  \"time_share\": {\"geometry\": " << jsonNumber(timers_.geometry / wall)
            << ", \"nodal_solve\": " << jsonNumber(timers_.nodal / wall)
+           << ", \"reconstruction\": " << jsonNumber(timers_.recon / wall)
            << ", \"strain_update\": " << jsonNumber(timers_.strain / wall)
            << ", \"heat_fluxes\": " << jsonNumber(timers_.heat / wall)
            << ", \"cell_update\": " << jsonNumber(timers_.update / wall)
@@ -718,26 +745,166 @@ class GprSolver
         computeEos<D, P>(s, cellMaterial_, materials_, aux_, m_.nCells, sigma);
     }
 
-    /*! First Picard iterate of a step: sigma^0 = 2 sigma^n - sigma^{n-1}, linear extrapolation in time (the steps grow
-     *  by at most 10%), which saves one or two iterations over sigma^0 = sigma^n; the fixed point does not depend on
-     *  it. Kept in sigma0_ for a retry. On all local cells, so ghosts need no exchange. */
-    void startPicard(long step)
+    /*! First Picard iterate of a step, by linear extrapolation in time of the previous fixed points (the steps grow by
+     *  at most 10%), which saves one or two iterations; the fixed point does not depend on it. Kept in sigma0_ for a
+     *  retry. On all local cells, so ghosts need no exchange.
+     *   - first order: sigma^0 = 2 sigma^n - sigma^{n-1} (sigma_ holds sigma^n, from computeAux);
+     *   - second order, the predictor: sigma^0 = 2 s^{n-1/2} - s^{n-3/2} with s the previous predictors' fixed points
+     *     (notePredictorStress). Extrapolating sigma^n instead starts about 1e-4 rho a^2 away on the Be shell (the
+     *     first-order predictor and the second-order state differ by the scheme's truncation error), which cost
+     *     8-18 iterations instead of 2. */
+    void startPicard(long step, bool order2)
     {
         auto sigma = sigma_->getLocalViewDevice(Tpetra::Access::ReadWrite);
         auto prev = sigmaPrev_->getLocalViewDevice(Tpetra::Access::ReadWrite);
-        const bool extrapolate = step > 0;
-        auto start = KOKKOS_LAMBDA(const LO i)
+        if (order2)
         {
-            for (int c = 0; c < 6; ++c)
+            if (step >= 1)
             {
-                const double s = sigma(i, c);
-                if (extrapolate)
-                    sigma(i, c) = 2.0 * s - prev(i, c);
-                prev(i, c) = s;
+                auto prev2 = sigmaPrev2_->getLocalViewDevice(Tpetra::Access::ReadOnly);
+                const bool extrapolate = step >= 2;
+                auto start = KOKKOS_LAMBDA(const LO i)
+                {
+                    for (int c = 0; c < 6; ++c)
+                        sigma(i, c) = extrapolate ? 2.0 * prev(i, c) - prev2(i, c) : prev(i, c);
+                };
+                Kokkos::parallel_for("unilag::gpr::picard_start", range(m_.nCells), start);
             }
-        };
-        Kokkos::parallel_for("unilag::gpr::picard_start", range(m_.nCells), start);
+        }
+        else
+        {
+            const bool extrapolate = step > 0;
+            auto start = KOKKOS_LAMBDA(const LO i)
+            {
+                for (int c = 0; c < 6; ++c)
+                {
+                    const double s = sigma(i, c);
+                    if (extrapolate)
+                        sigma(i, c) = 2.0 * s - prev(i, c);
+                    prev(i, c) = s;
+                }
+            };
+            Kokkos::parallel_for("unilag::gpr::picard_start", range(m_.nCells), start);
+        }
         Tpetra::deep_copy(*sigma0_, *sigma_);
+    }
+
+    //! Second order: keep the accepted predictor's fixed point (sigma_) and the one before, for startPicard.
+    void notePredictorStress()
+    {
+        std::swap(sigmaPrev2_, sigmaPrev_);
+        Tpetra::deep_copy(*sigmaPrev_, *sigma_);
+    }
+
+    //! Imposed boundary pressures at time t (scene expressions of t).
+    void setBoundaryTime(double t)
+    {
+        if (pressureLaws_.empty())
+            return;
+        for (auto& [g, law] : pressureLaws_)
+            bcValueHost_(g, 0) = (*law)(0.0, 0.0, 0.0, t);
+        Kokkos::deep_copy(bcValue_, bcValueHost_);
+    }
+
+    //! The global extrema of a cell update's checks. Collective.
+    UpdateCheck reduceCheck(UpdateCheck check)
+    {
+        double ext[3] = {-check.minVolumeRatio, -check.minSound2, check.maxGclDefect};
+        MPI_Allreduce(MPI_IN_PLACE, ext, 3, MPI_DOUBLE, MPI_MAX, comm_);
+        check.minVolumeRatio = -ext[0];
+        check.minSound2 = -ext[1];
+        check.maxGclDefect = ext[2];
+        return check;
+    }
+
+    /*! Corrector of a second-order step (midpoint rule): the predictor has left Q^{n+1/2} in stateNew_ (owned cells),
+     *  the positions x^{n+1/2} in xNew_ (all local nodes) and the geometry of the owned cells in geomNew_. Completes
+     *  the midpoint state on the ghosts, reconstructs (limited gradients, exchanged), solves the nodes with the
+     *  reconstructed midpoint values at t^n + dt/2, and updates Q^n over dt with those fluxes: x^{n+1} = x^n + dt v_r,
+     *  G_e from G^n with the midpoint transport and an implicit relaxation over dt, heat fluxes of the midpoint state.
+     *  The result is in stateNew_, xNew_, geomNew_ as after a first-order step. Collective; false (with a message in
+     *  failure) if the G_e update finds an inadmissible cell, and check tells whether the update is admissible. */
+    bool corrector(double t, double dt, UpdateCheck& check, std::string& failure)
+    {
+        const auto& dm = *mesh_;
+        std::swap(stateMid_, stateNew_);
+        std::swap(xMid_, xNew_);
+        std::swap(geomMid_, geomNew_);
+        {
+            ScopedTimer timer(timers_.halo);
+            auto owned = stateMid_->offsetViewNonConst(dm.cellMap, 0);
+            stateMid_->doImport(*owned, *dm.cellImporter, Tpetra::INSERT);
+        }
+        auto xm = xMid_->getLocalViewDevice(Tpetra::Access::ReadOnly);
+        auto sm = stateMid_->getLocalViewDevice(Tpetra::Access::ReadOnly);
+        {
+            ScopedTimer timer(timers_.geometry);
+            computeGeometry<D>(m_, xm, geomMid_, m_.nCells, m_.nOwnedCells);
+        }
+        {
+            ScopedTimer timer(timers_.nodal);
+            computeEos<D, P>(sm, cellMaterial_, materials_, auxMid_, m_.nCells, sigmaMid_);
+        }
+        {
+            ScopedTimer timer(timers_.recon);
+            auto g = grad_->getLocalViewDevice(Tpetra::Access::ReadWrite);
+            limitedGradients<D, P>(m_, sm, auxMid_, sigmaMid_, geomMid_, xm, g);
+        }
+        {
+            ScopedTimer timer(timers_.halo);
+            auto owned = grad_->offsetViewNonConst(dm.cellMap, 0);
+            grad_->doImport(*owned, *dm.cellImporter, Tpetra::INSERT);
+        }
+        auto grad = grad_->getLocalViewDevice(Tpetra::Access::ReadOnly);
+        const Reconstruction<D> rec{grad, xm, geomMid_.centroid};
+        if constexpr (P::heat)
+        {
+            ScopedTimer timer(timers_.heat);
+            heatFluxes<D, P>(m_, bc_, sm, auxMid_, geomMid_, cellMaterial_, materials_, heatRateMid_);
+        }
+        setBoundaryTime(t + 0.5 * dt);
+        {
+            ScopedTimer timer(timers_.nodal);
+            auto v = vnode_->getLocalViewDevice(Tpetra::Access::ReadWrite);
+            nodalSolve<D, P>(m_, bc_, sm, auxMid_, geomMid_, v, fnode_, sigmaMid_, rec);
+        }
+        {
+            ScopedTimer timer(timers_.halo);
+            auto owned = vnode_->offsetViewNonConst(mesh_->nodeMap, 0);
+            vnode_->doImport(*owned, *mesh_->nodeImporter, Tpetra::INSERT);
+        }
+        auto x = x_->getLocalViewDevice(Tpetra::Access::ReadOnly);
+        auto xn = xNew_->getLocalViewDevice(Tpetra::Access::OverwriteAll);
+        auto v = vnode_->getLocalViewDevice(Tpetra::Access::ReadOnly);
+        auto s = state_->getLocalViewDevice(Tpetra::Access::ReadOnly);
+        auto sn = stateNew_->getLocalViewDevice(Tpetra::Access::ReadWrite);
+        moveNodes(x, v, dt, xn, m_.nNodes, D);
+        if constexpr (P::strain)
+        {
+            PicardCheck pc;
+            {
+                ScopedTimer timer(timers_.strain);
+                auto snext = sigmaNext_->getLocalViewDevice(Tpetra::Access::ReadWrite);
+                pc = strainUpdate<D, P>(m_, s, aux_, geom_, mass_, cellMaterial_, materials_, xn, v, dt, sigmaMid_,
+                                        snext, sn, plasticHintCorrector_, sm, geomMid_);
+            }
+            double bad = pc.badCell >= 0 ? 1.0 : 0.0;
+            MPI_Allreduce(MPI_IN_PLACE, &bad, 1, MPI_DOUBLE, MPI_MAX, comm_);
+            if (bad > 0.0)
+            {
+                const std::string local = pc.badCell >= 0 ? "cell " + std::to_string(dm.cellGid[pc.badCell]) +
+                                                                " became inadmissible (inverted, or G_e not positive "
+                                                                "definite) in the corrector with dt " + jsonNumber(dt)
+                                                          : std::string();
+                failure = firstMessage(comm_, local);
+                return false;
+            }
+        }
+        ScopedTimer timer(timers_.update);
+        check = reduceCheck(updateCells<D, P>(m_, s, aux_, geom_, mass_, cellMaterial_, materials_, x, xn, v, dt, sn,
+                                              ConstField(), heatRateMid_, geomNew_,
+                                              CellFlux<D>{sm, auxMid_, sigmaMid_, geomMid_, rec}));
+        return true;
     }
 
     //! Nodal solve at owned nodes with T = -p^n I + sigma_ (strain), then node velocities to all local nodes.
@@ -1151,9 +1318,14 @@ class GprSolver
     Teuchos::RCP<MV> state_, stateNew_, x_, xNew_, vnode_;
     Teuchos::RCP<MV> sigma_, sigmaNext_, vnode0_; //!< strain: Picard stress iterates, nodal solution for sigma^0
     Teuchos::RCP<MV> sigmaPrev_, sigma0_;         //!< strain: sigma^{n-1}; the first iterate sigma^0
+    Teuchos::RCP<MV> sigmaPrev2_;                 //!< strain, second order: the predictor's fixed point before last
+    Teuchos::RCP<MV> stateMid_, xMid_, grad_;     //!< second order: midpoint state and positions, limited gradients
+    CellGeometry geomMid_;                        //!< second order: midpoint geometry
+    Field auxMid_, sigmaMid_, heatRateMid_;       //!< second order: EOS, shear stress and heat fluxes at the midpoint
     Field fnode_, aux_;
     Field heatRate_; //!< heat: m dE/dt and m dJ/dt of the fluxes at t^n (owned cells)
     View<double*> plasticHint_; //!< plastic: each owned cell's last plastic-flow parameter (warm start)
+    View<double*> plasticHintCorrector_; //!< plastic, second order: the same for the corrector (a step twice as long)
     long picardTotal_ = 0;
     int picardMax_ = 0;
     std::unique_ptr<std::ofstream> steps_;
