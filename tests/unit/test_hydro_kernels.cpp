@@ -1,6 +1,8 @@
 // Hydro kernels (kernels/unilag/Hydro.hpp) on hand-built distorted simplex meshes, without MPI maps:
 // free-stream preservation (2D and 3D) and conservation of mass, momentum (up to the boundary impulse) and
-// total energy with slip walls, the GCL defect, and the slip-wall constraint on node velocities.
+// total energy with slip walls, the GCL defect, and the slip-wall constraint on node velocities; the same with the
+// second-order reconstruction (Reconstruction.hpp), whose least-squares gradients are exact for linear fields and
+// whose limited node values stay within the face neighbours' cell values.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -166,11 +168,14 @@ template <int D> struct Hydro
     Kokkos::View<LO**, Kokkos::LayoutLeft, MemSpace> cellNodes;
     unilag::View<LO*> offsets, corners;
     unilag::View<int**> faceGroup;
+    unilag::View<LO**> neighbour;
     unilag::MeshView<D> mesh;
     unilag::BoundaryView bc;
     unilag::View<int*> cellMaterial;
     unilag::View<unilag::Material*> materials;
     Field x, xNew, state, stateNew, aux, vnode, fnode;
+    Field grad;          //!< limited gradients (second order)
+    bool order2 = false; //!< step() with the reconstructed fluxes
     unilag::CellGeometry geom;
     unilag::View<double*> mass;
 
@@ -180,8 +185,35 @@ template <int D> struct Hydro
           corners("corners", nCells * NV), faceGroup("faceGroup", nCells, NV), cellMaterial("cellMaterial", nCells),
           materials("materials", 1), x("x", nNodes, D), xNew("xNew", nNodes, D), state("state", nCells, S::ncomp),
           stateNew("stateNew", nCells, S::ncomp), aux("aux", nCells, unilag::Aux::ncomp<unilag::PhysicsHydro>()), vnode("vnode", nNodes, D),
-          fnode("fnode", nNodes, D), geom(nCells, D), mass("mass", nCells)
+          fnode("fnode", nNodes, D), grad("grad", nCells, unilag::ReconLayout<D, unilag::PhysicsHydro>::ncomp),
+          geom(nCells, D), mass("mass", nCells)
     {
+        neighbour = unilag::View<LO**>("neighbour", nCells, NV);
+        {
+            // face neighbours: the other cell with the same sorted node set opposite local node k
+            std::map<std::array<LO, D>, std::pair<LO, int>> open;
+            auto nb = Kokkos::create_mirror_view(neighbour);
+            Kokkos::deep_copy(nb, -1);
+            for (LO i = 0; i < nCells; ++i)
+                for (int k = 0; k < NV; ++k)
+                {
+                    std::array<LO, D> key;
+                    int n = 0;
+                    for (int j = 0; j < NV; ++j)
+                        if (j != k)
+                            key[n++] = h.cells[NV * i + j];
+                    std::sort(key.begin(), key.end());
+                    auto it = open.find(key);
+                    if (it == open.end())
+                        open[key] = {i, k};
+                    else
+                    {
+                        nb(i, k) = it->second.first;
+                        nb(it->second.first, it->second.second) = i;
+                    }
+                }
+            Kokkos::deep_copy(neighbour, nb);
+        }
         auto cn = Kokkos::create_mirror_view(cellNodes);
         auto fg = Kokkos::create_mirror_view(faceGroup);
         auto off = Kokkos::create_mirror_view(offsets);
@@ -208,6 +240,7 @@ template <int D> struct Hydro
         mesh.nodeCornerOffsets = offsets;
         mesh.nodeCorners = corners;
         mesh.cellFaceGroup = faceGroup;
+        mesh.cellNeighbour = neighbour;
         mesh.nOwnedCells = mesh.nCells = nCells;
         mesh.nOwnedNodes = mesh.nNodes = nNodes;
 
@@ -281,11 +314,19 @@ template <int D> struct Hydro
     //! of the step; state and positions advance.
     unilag::UpdateCheck step(double& dt)
     {
-        unilag::nodalSolve<D>(mesh, bc, state, aux, geom, vnode, fnode);
+        unilag::Reconstruction<D> rec;
+        if (order2)
+        {
+            unilag::limitedGradients<D, unilag::PhysicsHydro>(mesh, state, aux, unilag::ConstField(), geom, x, grad);
+            rec = unilag::Reconstruction<D>{grad, x, geom.centroid};
+        }
+        unilag::nodalSolve<D>(mesh, bc, state, aux, geom, vnode, fnode, unilag::ConstField(), rec);
         dt = unilag::stableTimeStep<D>(mesh, aux, geom, vnode, 0.5, 0.1);
         unilag::moveNodes(x, vnode, dt, xNew, nNodes, D);
-        const auto check =
-            unilag::updateCells<D>(mesh, state, aux, geom, mass, cellMaterial, materials, x, xNew, vnode, dt, stateNew);
+        const auto check = unilag::updateCells<D>(mesh, state, aux, geom, mass, cellMaterial, materials, x, xNew,
+                                                  vnode, dt, stateNew, unilag::ConstField(), unilag::ConstField(),
+                                                  unilag::CellGeometry(),
+                                                  unilag::CellFlux<D>{state, aux, unilag::ConstField(), geom, rec});
         std::swap(state, stateNew);
         std::swap(x, xNew);
         refresh();
@@ -317,12 +358,13 @@ template <int D> struct Hydro
 
 //! Free stream: uniform state, every boundary node driven at the stream velocity. The state and the node
 //! velocities must stay uniform to round-off on the distorted mesh.
-template <int D> void checkFreeStream(HostMesh<D> h, const std::array<double, 3>& u)
+template <int D> void checkFreeStream(HostMesh<D> h, const std::array<double, 3>& u, bool order2 = false)
 {
     using S = unilag::HydroState<D>;
     const double gamma = 1.4, rho0 = 1.0, p0 = 1.0;
     ASSERT_NO_FATAL_FAILURE(markBoundary<D>(h, [](int) { return 0; }));
     Hydro<D> hydro(h, gamma, {{BcVelocity, u}});
+    hydro.order2 = order2;
     ASSERT_NO_FATAL_FAILURE(hydro.initialize(
         [&](const double*, double& rho, double& p, double* v)
         {
@@ -370,7 +412,7 @@ template <int D> void checkFreeStream(HostMesh<D> h, const std::array<double, 3>
 //! Slip walls on the 2D faces of the box (one group per wall, or one group for all walls, so that a group has
 //! corners and edges): mass (through the GCL) and total energy are conserved, momentum changes by the boundary
 //! impulse, walls see no normal node velocity.
-template <int D> void checkConservation(HostMesh<D> h, int steps, bool oneGroup = false)
+template <int D> void checkConservation(HostMesh<D> h, int steps, bool oneGroup = false, bool order2 = false)
 {
     const double gamma = 1.4, pi = std::acos(-1.0);
     if (oneGroup)
@@ -379,6 +421,7 @@ template <int D> void checkConservation(HostMesh<D> h, int steps, bool oneGroup 
         ASSERT_NO_FATAL_FAILURE(markBoundary<D>(h, wallGroup)); // groups 0 .. 2D-1: x = 0, x = 1, y = 0, ...
     const std::array<double, 3> none{0.0, 0.0, 0.0};
     Hydro<D> hydro(h, gamma, std::vector<std::pair<int, std::array<double, 3>>>(2 * D, {BcSlipWall, none}));
+    hydro.order2 = order2;
     ASSERT_NO_FATAL_FAILURE(hydro.initialize(
         [&](const double* c, double& rho, double& p, double* v)
         {
@@ -447,7 +490,113 @@ template <int D> void checkConservation(HostMesh<D> h, int steps, bool oneGroup 
     EXPECT_GT(std::abs(last[1] - initial[1]), 1e-3 * last[2 + D]);
 }
 
+/*! Reconstruction of p = 1 + g . x and v = A x on the distorted mesh: the least-squares gradients are exact (every
+ *  cell, boundary cells included); the limited ones keep every vertex value within the cell's and its face
+ *  neighbours' values, and are not all clipped to zero. */
+template <int D> void checkReconstruction(HostMesh<D> h)
+{
+    using R = unilag::ReconLayout<D, unilag::PhysicsHydro>;
+    const double gamma = 1.4;
+    const double g[3] = {0.3, -0.7, 0.45};
+    const double A[3][3] = {{0.2, -0.5, 0.1}, {0.4, 0.3, -0.2}, {-0.1, 0.25, 0.6}};
+    ASSERT_NO_FATAL_FAILURE(markBoundary<D>(h, [](int) { return 0; }));
+    Hydro<D> hydro(h, gamma, {{BcSlipWall, {0.0, 0.0, 0.0}}});
+    ASSERT_NO_FATAL_FAILURE(hydro.initialize(
+        [&](const double* c, double& rho, double& p, double* v)
+        {
+            rho = 1.0;
+            p = 1.0;
+            for (int a = 0; a < D; ++a)
+            {
+                p += g[a] * c[a];
+                v[a] = 0.0;
+                for (int b = 0; b < D; ++b)
+                    v[a] += A[a][b] * c[b];
+            }
+        },
+        gamma));
+    unilag::limitedGradients<D, unilag::PhysicsHydro>(hydro.mesh, hydro.state, hydro.aux, unilag::ConstField(),
+                                                      hydro.geom, hydro.x, hydro.grad, false);
+    auto gr = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), hydro.grad);
+    for (LO i = 0; i < hydro.nCells; ++i)
+        for (int a = 0; a < D; ++a)
+        {
+            ASSERT_NEAR(gr(i, R::pressure * D + a), g[a], 1e-12) << "cell " << i;
+            for (int b = 0; b < D; ++b)
+                ASSERT_NEAR(gr(i, (R::vel + b) * D + a), A[b][a], 1e-12) << "cell " << i;
+        }
+
+    unilag::limitedGradients<D, unilag::PhysicsHydro>(hydro.mesh, hydro.state, hydro.aux, unilag::ConstField(),
+                                                      hydro.geom, hydro.x, hydro.grad);
+    Kokkos::deep_copy(gr, hydro.grad);
+    auto aux = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), hydro.aux);
+    auto xh = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), hydro.x);
+    auto ch = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), hydro.geom.centroid);
+    auto cn = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), hydro.cellNodes);
+    auto nb = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), hydro.neighbour);
+    double kept = 0.0, gnorm = 0.0;
+    for (int a = 0; a < D; ++a)
+        gnorm += g[a] * g[a];
+    gnorm = std::sqrt(gnorm);
+    for (LO i = 0; i < hydro.nCells; ++i)
+    {
+        double lo = aux(i, unilag::Aux::pressure), hi = lo;
+        for (int k = 0; k < D + 1; ++k)
+            if (nb(i, k) >= 0)
+            {
+                lo = std::min(lo, aux(nb(i, k), unilag::Aux::pressure));
+                hi = std::max(hi, aux(nb(i, k), unilag::Aux::pressure));
+            }
+        for (int k = 0; k < D + 1; ++k)
+        {
+            double w = aux(i, unilag::Aux::pressure);
+            for (int a = 0; a < D; ++a)
+                w += gr(i, R::pressure * D + a) * (xh(cn(i, k), a) - ch(i, a));
+            EXPECT_GE(w, lo - 1e-14) << "cell " << i << " vertex " << k;
+            EXPECT_LE(w, hi + 1e-14) << "cell " << i << " vertex " << k;
+        }
+        // the limiter only scales the gradient
+        double dotg = 0.0, n2 = 0.0;
+        for (int a = 0; a < D; ++a)
+        {
+            dotg += gr(i, R::pressure * D + a) * g[a];
+            n2 += gr(i, R::pressure * D + a) * gr(i, R::pressure * D + a);
+        }
+        EXPECT_NEAR(dotg, std::sqrt(n2) * gnorm, 1e-12) << "cell " << i;
+        kept += std::sqrt(n2) / gnorm / hydro.nCells;
+    }
+    // Face-neighbour bounds clip linear fields at many vertices, but the mean kept fraction of the slope stays well
+    // above zero (measured 0.585 in 2D and 0.429 in 3D on these meshes; 0 would be first order).
+    EXPECT_GT(kept, D == 2 ? 0.5 : 0.3);
+    std::printf("mean limiter factor on a linear field: %.3f\n", kept);
+}
+
 } // namespace
+
+TEST(HydroKernels, ReconstructionLinearExactAndBounded2D)
+{
+    checkReconstruction<2>(squareMesh(12, 0.3, 31));
+}
+
+TEST(HydroKernels, ReconstructionLinearExactAndBounded3D)
+{
+    checkReconstruction<3>(cubeMesh(4, 0.2, 32));
+}
+
+TEST(HydroKernels, FreeStreamPreservedSecondOrder2D)
+{
+    checkFreeStream<2>(squareMesh(12, 0.3, 2024), {1.0, 0.5, 0.0}, true);
+}
+
+TEST(HydroKernels, ConservationSecondOrder2D)
+{
+    checkConservation<2>(squareMesh(12, 0.3, 7), 10, false, true);
+}
+
+TEST(HydroKernels, ConservationSecondOrder3D)
+{
+    checkConservation<3>(cubeMesh(4, 0.2, 8), 10, true, true);
+}
 
 TEST(HydroKernels, FreeStreamPreserved2D)
 {
