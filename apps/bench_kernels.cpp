@@ -8,7 +8,8 @@
  *  inputs/geometry/quadrant2d.geo (triangles, 4k to 250k cells) and octant3d.geo (tetrahedra, 8k and 64k);
  *  set UNILAG_INPUTS to the inputs folder if the source tree has moved. The state is a smooth non-trivial field
  *  with every boundary a slip wall, on one MPI rank. Benchmarks: `geometry/<D>D/<size>` is computeGeometry,
- *  `nodal_solve/...` nodalSolve (its gather over the node->corner CSR included), `cell_update/...` moveNodes +
+ *  `nodal_solve/...` nodalSolve (its gather over the node->corner CSR included), `reconstruction/...` the limited
+ *  gradients of the second-order reconstruction (velocity, pressure), `cell_update/...` moveNodes +
  *  updateCells with a CFL time step, `step/...` a whole step (geometry, EOS, nodal solve, move, update; the step
  *  is recomputed from the same state each iteration, so every iteration does identical work). Times are
  *  manual times between two Kokkos::fence() calls. Counters: `cells/s` (and `nodes/s` for the nodal solver) is
@@ -251,6 +252,20 @@ void benchNodal(benchmark::State& state, double h)
     setCounters(state, *f->dm, true);
 }
 
+//! Limited gradients of the second-order reconstruction (velocity, pressure), owned cells.
+template <int D>
+void benchReconstruction(benchmark::State& state, double h)
+{
+    Fixture<D>* f = fixture<D>(state, h);
+    if (!f)
+        return;
+    Field grad("bench::grad", f->m.nCells, ReconLayout<D, PhysicsHydro>::ncomp);
+    timed(state, [&] {
+        limitedGradients<D, PhysicsHydro>(f->m, f->state, f->aux, ConstField(), f->geom, f->x, grad);
+    });
+    setCounters(state, *f->dm, false);
+}
+
 template <int D>
 void benchUpdate(benchmark::State& state, double h)
 {
@@ -447,7 +462,8 @@ void registerAll(const MeshSpec (&specs)[N])
 {
     using Fn = void (*)(benchmark::State&, double);
     const std::pair<const char*, Fn> kernels[] = {
-        {"geometry", benchGeometry<D>}, {"nodal_solve", benchNodal<D>}, {"cell_update", benchUpdate<D>}, {"step", benchStep<D>}};
+        {"geometry", benchGeometry<D>}, {"nodal_solve", benchNodal<D>}, {"reconstruction", benchReconstruction<D>},
+        {"cell_update", benchUpdate<D>}, {"step", benchStep<D>}};
     for (const auto& [kernel, fn] : kernels)
         for (const MeshSpec& s : specs)
         {

@@ -24,7 +24,7 @@ Adiabatic walls at x = -0.5, 0.5: the exact linear solution is the cosine series
 The script compares cell temperatures (the `temperature` field, else specific_internal_energy / cv) at the cell
 centroids with it.
 
-usage: heat_conduction.py UNILAG SCENE WORKDIR
+usage: heat_conduction.py UNILAG SCENE WORKDIR [--set KEY=VALUE ...]
        heat_conduction.py --selftest
 """
 import glob
@@ -108,13 +108,14 @@ def main():
     if len(sys.argv) > 1 and sys.argv[1] == "--selftest":
         sys.exit(0 if selftest() else 1)
     unilag, scene, work = sys.argv[1:4]
+    extra = sys.argv[4:]  # more --set options for every run (e.g. --set scheme.order=2)
     if not selftest():
         sys.exit(1)
     rows = []
     for h in SIZES:
         out = os.path.join(work, f"heat_conduction_h{h}")
         subprocess.run([unilag, "run", scene, "--quiet", "--check", "--set", f"mesh.size={h}", "--set",
-                        "output.interval=0", "--output", out], check=True)
+                        "output.interval=0", "--output", out] + extra, check=True)
         t, xyz, conn, vol, theta = last_dump(out)
         xc = xyz[conn][:, :, 0].mean(axis=1)
         height = xyz[:, 1].max() - xyz[:, 1].min()

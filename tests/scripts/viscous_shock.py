@@ -17,7 +17,7 @@ excludes it (it lies ~0.19 behind the shock at t = 0.25, spread by conduction ov
 The exact profile is solved by bisection (numpy only); `viscous_shock.py --selftest` checks it: the end states
 against Rankine-Hugoniot and Becker's ODE (4/3)(mu/(rho0 U)) v' = ((gamma+1)/(2 gamma)) (1 - v)(v - a)/v.
 
-usage: viscous_shock.py UNILAG SCENE WORKDIR
+usage: viscous_shock.py UNILAG SCENE WORKDIR [--set KEY=VALUE ...]
        viscous_shock.py --selftest
 """
 import glob
@@ -130,13 +130,14 @@ def main():
     if len(sys.argv) > 1 and sys.argv[1] == "--selftest":
         sys.exit(0 if selftest() else 1)
     unilag, scene, work = sys.argv[1:4]
+    extra = sys.argv[4:]  # more --set options for every run (e.g. --set scheme.order=2)
     if not selftest():
         sys.exit(1)
     rows = []
     for h in SIZES:
         out = os.path.join(work, f"viscous_shock_h{h}")
         subprocess.run([unilag, "run", scene, "--quiet", "--check", "--set", f"mesh.size={h}", "--set",
-                        "output.interval=0", "--output", out], check=True)
+                        "output.interval=0", "--output", out] + extra, check=True)
         t, xyz, conn, rho, vol = last_dump(out)
         xc = xyz[conn][:, :, 0].mean(axis=1)
         height = xyz[:, 1].max() - xyz[:, 1].min()
