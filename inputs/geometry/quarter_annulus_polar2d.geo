@@ -1,7 +1,8 @@
 // Quarter annulus r0 <= r <= r1 (Kidder shell) with a structured polar mesh: transfinite quadrilaterals of size
-// about h = mesh.size, each split into two triangles. Every ring of nodes starts on one radius, so the radial
-// solution has no seed for the Rayleigh-Taylor modes of the pressure-driven outer surface; on the unstructured
-// quarter (quarter_annulus2d.geo) they grow from the mesh's irregularity once the scheme is second order.
+// about h = mesh.size, split into triangles with alternating diagonals, so the mesh is symmetric about the quarter's
+// diagonal and every ring of nodes starts on one radius. For studies of Kidder's shell without the irregularity of
+// quarter_annulus2d.geo (--set mesh.geometry=geometry/quarter_annulus_polar2d.geo); see the README on its
+// Rayleigh-Taylor unstable outer surface.
 h = Mesh.MeshSizeMax;
 r0 = 0.9;
 r1 = 1.0;
@@ -20,7 +21,7 @@ nr = Ceil((r1 - r0) / h) + 1;
 nt = Ceil(0.5 * Pi * 0.5 * (r0 + r1) / h) + 1;
 Transfinite Curve{1, 3} = nr;
 Transfinite Curve{2, 4} = nt;
-Transfinite Surface{1};
+Transfinite Surface{1} Alternate;
 Physical Curve("axis_x") = {1};
 Physical Curve("outer") = {2};
 Physical Curve("axis_y") = {3};

@@ -845,10 +845,11 @@ class GprSolver
             ScopedTimer timer(timers_.nodal);
             computeEos<D, P>(sm, cellMaterial_, materials_, auxMid_, m_.nCells, sigmaMid_);
         }
+        setBoundaryTime(t + 0.5 * dt);
         {
             ScopedTimer timer(timers_.recon);
             auto g = grad_->getLocalViewDevice(Tpetra::Access::ReadWrite);
-            limitedGradients<D, P>(m_, sm, auxMid_, sigmaMid_, geomMid_, xm, g);
+            limitedGradients<D, P>(m_, sm, auxMid_, sigmaMid_, geomMid_, xm, g, bc_);
         }
         {
             ScopedTimer timer(timers_.halo);
@@ -862,7 +863,6 @@ class GprSolver
             ScopedTimer timer(timers_.heat);
             heatFluxes<D, P>(m_, bc_, sm, auxMid_, geomMid_, cellMaterial_, materials_, heatRateMid_);
         }
-        setBoundaryTime(t + 0.5 * dt);
         {
             ScopedTimer timer(timers_.nodal);
             auto v = vnode_->getLocalViewDevice(Tpetra::Access::ReadWrite);

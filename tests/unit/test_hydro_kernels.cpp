@@ -516,7 +516,8 @@ template <int D> void checkReconstruction(HostMesh<D> h)
         },
         gamma));
     unilag::limitedGradients<D, unilag::PhysicsHydro>(hydro.mesh, hydro.state, hydro.aux, unilag::ConstField(),
-                                                      hydro.geom, hydro.x, hydro.grad, false);
+                                                      hydro.geom, hydro.x, hydro.grad, unilag::BoundaryView(),
+                                                      false);
     auto gr = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), hydro.grad);
     for (LO i = 0; i < hydro.nCells; ++i)
         for (int a = 0; a < D; ++a)
