@@ -13,6 +13,9 @@
  *                     checked against |T_i^{n+1}| / m_i every step, which is what is stored
  *  Every node sum is a gather over the node -> corner CSR map (no atomics): results are bitwise independent of
  *  the thread count, and, since corners are ordered by global cell id, of the MPI partition.
+ *  Second order: v_i, p_i and sigma_i in the nodal solve and the subcell forces become the limited reconstruction
+ *  at the node, v_i(x_r) etc. (Reconstruction.hpp, cornerValues); the update then takes its forces from the midpoint
+ *  state of the predictor-corrector (CellFlux), and strainUpdate its transport.
  */
 #pragma once
 
