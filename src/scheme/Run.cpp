@@ -531,11 +531,9 @@ class GprSolver
                 if (ok)
                 {
                     ScopedTimer timer(timers_.update);
-                    auto x = x_->getLocalViewDevice(Tpetra::Access::ReadOnly);
-                    auto xn = xNew_->getLocalViewDevice(Tpetra::Access::ReadWrite);
-                    auto v = vnode_->getLocalViewDevice(Tpetra::Access::ReadOnly);
-                    auto s = state_->getLocalViewDevice(Tpetra::Access::ReadOnly);
-                    auto sn = stateNew_->getLocalViewDevice(Tpetra::Access::ReadWrite);
+                    const StepViews w = stepViews();
+                    const auto &x = w.x, &v = w.v, &s = w.s;
+                    const auto &xn = w.xn, &sn = w.sn;
                     if constexpr (!P::strain)
                         moveNodes(x, v, dtFirst, xn, m_.nNodes, D); // (the converged Picard iterate has moved them)
                     ConstField sigma;
@@ -796,6 +794,21 @@ class GprSolver
         Tpetra::deep_copy(*sigmaPrev_, *sigma_);
     }
 
+    //! Device views of a step's arrays: positions at t^n and new ones, node velocities, the state and the new state.
+    struct StepViews
+    {
+        ConstField x;
+        Field xn;
+        ConstField v, s;
+        Field sn;
+    };
+    StepViews stepViews()
+    {
+        return {x_->getLocalViewDevice(Tpetra::Access::ReadOnly), xNew_->getLocalViewDevice(Tpetra::Access::ReadWrite),
+                vnode_->getLocalViewDevice(Tpetra::Access::ReadOnly), state_->getLocalViewDevice(Tpetra::Access::ReadOnly),
+                stateNew_->getLocalViewDevice(Tpetra::Access::ReadWrite)};
+    }
+
     //! Imposed boundary pressures at time t (scene expressions of t).
     void setBoundaryTime(double t)
     {
@@ -873,11 +886,9 @@ class GprSolver
             auto owned = vnode_->offsetViewNonConst(mesh_->nodeMap, 0);
             vnode_->doImport(*owned, *mesh_->nodeImporter, Tpetra::INSERT);
         }
-        auto x = x_->getLocalViewDevice(Tpetra::Access::ReadOnly);
-        auto xn = xNew_->getLocalViewDevice(Tpetra::Access::OverwriteAll);
-        auto v = vnode_->getLocalViewDevice(Tpetra::Access::ReadOnly);
-        auto s = state_->getLocalViewDevice(Tpetra::Access::ReadOnly);
-        auto sn = stateNew_->getLocalViewDevice(Tpetra::Access::ReadWrite);
+        const StepViews w = stepViews();
+        const auto &x = w.x, &v = w.v, &s = w.s;
+        const auto &xn = w.xn, &sn = w.sn;
         moveNodes(x, v, dt, xn, m_.nNodes, D);
         if constexpr (P::strain)
         {
@@ -938,11 +949,9 @@ class GprSolver
             PicardCheck pc;
             {
                 ScopedTimer timer(timers_.strain);
-                auto x = x_->getLocalViewDevice(Tpetra::Access::ReadOnly);
-                auto xn = xNew_->getLocalViewDevice(Tpetra::Access::OverwriteAll);
-                auto v = vnode_->getLocalViewDevice(Tpetra::Access::ReadOnly);
-                auto s = state_->getLocalViewDevice(Tpetra::Access::ReadOnly);
-                auto sn = stateNew_->getLocalViewDevice(Tpetra::Access::ReadWrite);
+                const StepViews w = stepViews();
+                const auto &x = w.x, &v = w.v, &s = w.s;
+                const auto &xn = w.xn, &sn = w.sn;
                 auto so = sigma_->getLocalViewDevice(Tpetra::Access::ReadOnly);
                 auto snext = sigmaNext_->getLocalViewDevice(Tpetra::Access::ReadWrite);
                 moveNodes(x, v, dt, xn, m_.nNodes, D);
