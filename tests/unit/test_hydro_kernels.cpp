@@ -113,21 +113,24 @@ HostMesh<3> cubeMesh(int n, double amp, unsigned seed)
     return m;
 }
 
+//! The sorted nodes of face k (opposite local node k) of cell i: equal for the two cells sharing the face.
+template <int D> std::array<LO, D> faceKey(const HostMesh<D>& m, LO i, int k)
+{
+    std::array<LO, D> key;
+    int n = 0;
+    for (int j = 0; j < D + 1; ++j)
+        if (j != k)
+            key[n++] = m.cells[(D + 1) * i + j];
+    std::sort(key.begin(), key.end());
+    return key;
+}
+
 /*! Faces (opposite local node k) that no other cell shares are boundary faces; groupOf(wall bits common to the
  *  face's nodes) gives their group. */
 template <int D> void markBoundary(HostMesh<D>& m, const std::function<int(int)>& groupOf)
 {
     constexpr int NV = D + 1;
-    auto faceKey = [&](LO i, int k)
-    {
-        std::array<LO, D> key;
-        int n = 0;
-        for (int j = 0; j < NV; ++j)
-            if (j != k)
-                key[n++] = m.cells[NV * i + j];
-        std::sort(key.begin(), key.end());
-        return key;
-    };
+    auto faceKey = [&](LO i, int k) { return ::faceKey<D>(m, i, k); };
     std::map<std::array<LO, D>, int> count;
     for (LO i = 0; i < m.nCells(); ++i)
         for (int k = 0; k < NV; ++k)
@@ -197,12 +200,7 @@ template <int D> struct Hydro
             for (LO i = 0; i < nCells; ++i)
                 for (int k = 0; k < NV; ++k)
                 {
-                    std::array<LO, D> key;
-                    int n = 0;
-                    for (int j = 0; j < NV; ++j)
-                        if (j != k)
-                            key[n++] = h.cells[NV * i + j];
-                    std::sort(key.begin(), key.end());
+                    const auto key = faceKey<D>(h, i, k);
                     auto it = open.find(key);
                     if (it == open.end())
                         open[key] = {i, k};
