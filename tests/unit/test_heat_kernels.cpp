@@ -8,11 +8,10 @@
 #include <cmath>
 #include <cstring>
 #include <functional>
-#include <map>
 #include <random>
-#include <tuple>
 #include <vector>
 
+#include "HostMesh.hpp"
 #include "unilag/Heat.hpp"
 
 namespace
@@ -20,150 +19,14 @@ namespace
 
 using unilag::Field;
 using unilag::LO;
-using unilag::MemSpace;
 using unilag::ThermalAdiabatic;
 using unilag::ThermalIsothermal;
 using PH = unilag::Physics<false, false, true>;
-
-// ---- meshes on the host ----
-
-//! A simplex mesh: coordinates, cells, per face (opposite local node k) its boundary group or -1, and the
-//! neighbour across it (or -1). wall[r] has bit 2d set if node r lies on x_d = 0 and bit 2d+1 if on x_d = 1.
-template <int D> struct HostMesh
-{
-    static constexpr int NV = D + 1;
-    std::vector<double> x;
-    std::vector<LO> cells;
-    std::vector<int> faceGroup;
-    std::vector<LO> neighbour;
-    std::vector<int> wall;
-    LO nNodes() const { return LO(x.size() / D); }
-    LO nCells() const { return LO(cells.size() / NV); }
-};
-
-//! Structured node grid of [0,1]^D with n cells a side; interior nodes moved by up to amp * h per coordinate.
-template <int D> HostMesh<D> gridNodes(int n, double amp, unsigned seed)
-{
-    HostMesh<D> m;
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<double> u(-amp / n, amp / n);
-    const int nn = D == 2 ? (n + 1) * (n + 1) : (n + 1) * (n + 1) * (n + 1);
-    for (int r = 0; r < nn; ++r)
-    {
-        int idx[3] = {r % (n + 1), (r / (n + 1)) % (n + 1), r / ((n + 1) * (n + 1))};
-        bool interior = true;
-        int wall = 0;
-        for (int d = 0; d < D; ++d)
-        {
-            interior = interior && idx[d] > 0 && idx[d] < n;
-            wall |= (idx[d] == 0 ? 1 : 0) << (2 * d);
-            wall |= (idx[d] == n ? 1 : 0) << (2 * d + 1);
-        }
-        for (int d = 0; d < D; ++d)
-            m.x.push_back(double(idx[d]) / n + (interior ? u(rng) : 0.0));
-        m.wall.push_back(wall);
-    }
-    return m;
-}
-
-//! n x n squares, each split into two triangles, counter-clockwise; diagonals alternate unless uniform.
-HostMesh<2> squareMesh(int n, double amp, unsigned seed, bool uniform = false)
-{
-    HostMesh<2> m = gridNodes<2>(n, amp, seed);
-    auto id = [n](int i, int j) { return LO(j * (n + 1) + i); };
-    for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i)
-        {
-            const LO a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
-            const std::array<LO, 6> t = (uniform || (i + j) % 2 == 0) ? std::array<LO, 6>{a, b, c, a, c, d}
-                                                                      : std::array<LO, 6>{a, b, d, b, c, d};
-            m.cells.insert(m.cells.end(), t.begin(), t.end());
-        }
-    return m;
-}
-
-//! n^3 cubes, each split into the 6 Kuhn tetrahedra along its main diagonal, positively oriented.
-HostMesh<3> cubeMesh(int n, double amp, unsigned seed)
-{
-    HostMesh<3> m = gridNodes<3>(n, amp, seed);
-    auto id = [n](int i, int j, int k) { return LO((k * (n + 1) + j) * (n + 1) + i); };
-    int perm[3] = {0, 1, 2};
-    std::vector<std::array<int, 3>> perms;
-    do
-        perms.push_back({perm[0], perm[1], perm[2]});
-    while (std::next_permutation(perm, perm + 3));
-    for (int k = 0; k < n; ++k)
-        for (int j = 0; j < n; ++j)
-            for (int i = 0; i < n; ++i)
-                for (const auto& p : perms)
-                {
-                    int c[3] = {i, j, k};
-                    LO tet[4];
-                    tet[0] = id(c[0], c[1], c[2]);
-                    for (int s = 0; s < 3; ++s)
-                    {
-                        ++c[p[s]];
-                        tet[s + 1] = id(c[0], c[1], c[2]);
-                    }
-                    const int inversions = (p[0] > p[1]) + (p[0] > p[2]) + (p[1] > p[2]);
-                    if (inversions % 2 == 1)
-                        std::swap(tet[0], tet[1]);
-                    m.cells.insert(m.cells.end(), tet, tet + 4);
-                }
-    return m;
-}
-
-/*! Face neighbours by matching sorted node lists; unmatched faces are boundary faces, whose group is
- *  groupOf(wall bits common to the face's nodes). */
-template <int D> void connect(HostMesh<D>& m, const std::function<int(int)>& groupOf)
-{
-    constexpr int NV = D + 1;
-    std::vector<std::tuple<std::array<LO, D>, LO, int>> faces;
-    for (LO i = 0; i < m.nCells(); ++i)
-        for (int k = 0; k < NV; ++k)
-        {
-            std::array<LO, D> key;
-            int n = 0;
-            for (int j = 0; j < NV; ++j)
-                if (j != k)
-                    key[n++] = m.cells[NV * i + j];
-            std::sort(key.begin(), key.end());
-            faces.emplace_back(key, i, k);
-        }
-    std::sort(faces.begin(), faces.end());
-    m.neighbour.assign(m.cells.size(), -1);
-    m.faceGroup.assign(m.cells.size(), -1);
-    for (std::size_t a = 0, b; a < faces.size(); a = b)
-    {
-        for (b = a + 1; b < faces.size() && std::get<0>(faces[b]) == std::get<0>(faces[a]);)
-            ++b;
-        ASSERT_LE(b - a, 2u);
-        const auto& [key, i, k] = faces[a];
-        if (b - a == 2)
-        {
-            const auto& [key2, i2, k2] = faces[a + 1];
-            m.neighbour[NV * i + k] = i2;
-            m.neighbour[NV * i2 + k2] = i;
-        }
-        else
-        {
-            int common = ~0;
-            for (LO r : key)
-                common &= m.wall[r];
-            ASSERT_NE(common, 0) << "boundary face off the walls: the mesh is not conforming";
-            m.faceGroup[NV * i + k] = groupOf(common);
-        }
-    }
-}
-
-//! Wall index 0 .. 2D-1 (x=0, x=1, y=0, ...) of a face from its common wall bits.
-int wallGroup(int common)
-{
-    int g = 0;
-    while (!(common & (1 << g)))
-        ++g;
-    return g;
-}
+using unilag_test::connect;
+using unilag_test::cubeMesh;
+using unilag_test::HostMesh;
+using unilag_test::squareMesh;
+using unilag_test::wallGroup;
 
 // ---- the kernel's data ----
 
@@ -173,9 +36,6 @@ template <int D> struct Heat
     static constexpr int NV = D + 1;
 
     LO nCells, nNodes;
-    Kokkos::View<LO**, Kokkos::LayoutLeft, MemSpace> cellNodes;
-    unilag::View<int**> faceGroup;
-    unilag::View<LO**> neighbour;
     unilag::MeshView<D> mesh;
     unilag::BoundaryView bc;
     unilag::View<int*> cellMaterial;
@@ -187,34 +47,18 @@ template <int D> struct Heat
     //! bcs: thermal type and wall temperature per boundary group.
     Heat(const HostMesh<D>& h, const std::vector<unilag::Material>& mats,
          const std::vector<std::pair<int, double>>& bcs)
-        : nCells(h.nCells()), nNodes(h.nNodes()), cellNodes("cellNodes", nCells, NV),
-          faceGroup("faceGroup", nCells, NV), neighbour("neighbour", nCells, NV), cellMaterial("cellMaterial", nCells),
+        : nCells(h.nCells()), nNodes(h.nNodes()), cellMaterial("cellMaterial", nCells),
           materials("materials", mats.size()), x("x", nNodes, D), state("state", nCells, S::ncomp),
           aux("aux", nCells, unilag::Aux::ncomp<PH>()), rate("rate", nCells, 1 + D), geom(nCells, D), centroid(nCells)
     {
-        auto cn = Kokkos::create_mirror_view(cellNodes);
-        auto fg = Kokkos::create_mirror_view(faceGroup);
-        auto nb = Kokkos::create_mirror_view(neighbour);
+        mesh = unilag_test::deviceMesh<D>(h, x);
         for (LO i = 0; i < nCells; ++i)
         {
             centroid[i].fill(0.0);
             for (int k = 0; k < NV; ++k)
-            {
-                cn(i, k) = h.cells[NV * i + k];
-                fg(i, k) = h.faceGroup[NV * i + k];
-                nb(i, k) = h.neighbour[NV * i + k];
                 for (int d = 0; d < D; ++d)
-                    centroid[i][d] += h.x[D * cn(i, k) + d] / NV;
-            }
+                    centroid[i][d] += h.x[D * h.cells[NV * i + k] + d] / NV;
         }
-        Kokkos::deep_copy(cellNodes, cn);
-        Kokkos::deep_copy(faceGroup, fg);
-        Kokkos::deep_copy(neighbour, nb);
-        mesh.cellNodes = cellNodes;
-        mesh.cellFaceGroup = faceGroup;
-        mesh.cellNeighbour = neighbour;
-        mesh.nOwnedCells = mesh.nCells = nCells;
-        mesh.nOwnedNodes = mesh.nNodes = nNodes;
 
         unilag::View<int*> thermal("thermal", bcs.size());
         unilag::View<double*> temperature("temperature", bcs.size());
@@ -236,11 +80,6 @@ template <int D> struct Heat
         Kokkos::deep_copy(materials, mh);
         Kokkos::deep_copy(cellMaterial, 0);
 
-        auto xh = Kokkos::create_mirror_view(x);
-        for (LO r = 0; r < nNodes; ++r)
-            for (int d = 0; d < D; ++d)
-                xh(r, d) = h.x[D * r + d];
-        Kokkos::deep_copy(x, xh);
         EXPECT_GT(unilag::computeGeometry<D>(mesh, x, geom, nCells), 0.0) << "the distorted mesh is tangled";
     }
 

@@ -9,10 +9,9 @@
 #include <array>
 #include <cmath>
 #include <functional>
-#include <map>
-#include <random>
 #include <vector>
 
+#include "HostMesh.hpp"
 #include "unilag/Hydro.hpp"
 
 namespace
@@ -23,142 +22,11 @@ using unilag::BcVelocity;
 using unilag::Field;
 using unilag::LO;
 using unilag::MemSpace;
-
-// ---- meshes on the host ----
-
-//! A simplex mesh of the unit square / cube: coordinates, cells, and per face (opposite local node k) its
-//! boundary group or -1. wall[r] has bit 2d set if node r lies on x_d = 0 and bit 2d+1 if on x_d = 1.
-template <int D> struct HostMesh
-{
-    static constexpr int NV = D + 1;
-    std::vector<double> x;
-    std::vector<LO> cells;
-    std::vector<int> faceGroup;
-    std::vector<int> wall;
-    LO nNodes() const { return LO(x.size() / D); }
-    LO nCells() const { return LO(cells.size() / NV); }
-};
-
-//! Structured node grid of [0,1]^D with n cells a side; interior nodes moved by up to amp * h per coordinate.
-template <int D> HostMesh<D> gridNodes(int n, double amp, unsigned seed)
-{
-    HostMesh<D> m;
-    std::mt19937 rng(seed);
-    std::uniform_real_distribution<double> u(-amp / n, amp / n);
-    const int nn = D == 2 ? (n + 1) * (n + 1) : (n + 1) * (n + 1) * (n + 1);
-    for (int r = 0; r < nn; ++r)
-    {
-        int idx[3] = {r % (n + 1), (r / (n + 1)) % (n + 1), r / ((n + 1) * (n + 1))};
-        bool interior = true;
-        int wall = 0;
-        for (int d = 0; d < D; ++d)
-        {
-            interior = interior && idx[d] > 0 && idx[d] < n;
-            wall |= (idx[d] == 0 ? 1 : 0) << (2 * d);
-            wall |= (idx[d] == n ? 1 : 0) << (2 * d + 1);
-        }
-        for (int d = 0; d < D; ++d)
-            m.x.push_back(double(idx[d]) / n + (interior ? u(rng) : 0.0));
-        m.wall.push_back(wall);
-    }
-    return m;
-}
-
-//! n x n squares, each split into two triangles (diagonals alternate), counter-clockwise.
-HostMesh<2> squareMesh(int n, double amp, unsigned seed)
-{
-    HostMesh<2> m = gridNodes<2>(n, amp, seed);
-    auto id = [n](int i, int j) { return LO(j * (n + 1) + i); };
-    for (int j = 0; j < n; ++j)
-        for (int i = 0; i < n; ++i)
-        {
-            const LO a = id(i, j), b = id(i + 1, j), c = id(i + 1, j + 1), d = id(i, j + 1);
-            const std::array<LO, 6> t =
-                (i + j) % 2 == 0 ? std::array<LO, 6>{a, b, c, a, c, d} : std::array<LO, 6>{a, b, d, b, c, d};
-            m.cells.insert(m.cells.end(), t.begin(), t.end());
-        }
-    return m;
-}
-
-//! n^3 cubes, each split into the 6 Kuhn tetrahedra along its main diagonal (a conforming triangulation),
-//! positively oriented.
-HostMesh<3> cubeMesh(int n, double amp, unsigned seed)
-{
-    HostMesh<3> m = gridNodes<3>(n, amp, seed);
-    auto id = [n](int i, int j, int k) { return LO((k * (n + 1) + j) * (n + 1) + i); };
-    int perm[3] = {0, 1, 2};
-    std::vector<std::array<int, 3>> perms;
-    do
-        perms.push_back({perm[0], perm[1], perm[2]});
-    while (std::next_permutation(perm, perm + 3));
-    for (int k = 0; k < n; ++k)
-        for (int j = 0; j < n; ++j)
-            for (int i = 0; i < n; ++i)
-                for (const auto& p : perms)
-                {
-                    int c[3] = {i, j, k};
-                    LO tet[4];
-                    tet[0] = id(c[0], c[1], c[2]);
-                    for (int s = 0; s < 3; ++s)
-                    {
-                        ++c[p[s]];
-                        tet[s + 1] = id(c[0], c[1], c[2]);
-                    }
-                    // odd permutations give negatively oriented tets
-                    const int inversions = (p[0] > p[1]) + (p[0] > p[2]) + (p[1] > p[2]);
-                    if (inversions % 2 == 1)
-                        std::swap(tet[0], tet[1]);
-                    m.cells.insert(m.cells.end(), tet, tet + 4);
-                }
-    return m;
-}
-
-//! The sorted nodes of face k (opposite local node k) of cell i: equal for the two cells sharing the face.
-template <int D> std::array<LO, D> faceKey(const HostMesh<D>& m, LO i, int k)
-{
-    std::array<LO, D> key;
-    int n = 0;
-    for (int j = 0; j < D + 1; ++j)
-        if (j != k)
-            key[n++] = m.cells[(D + 1) * i + j];
-    std::sort(key.begin(), key.end());
-    return key;
-}
-
-/*! Faces (opposite local node k) that no other cell shares are boundary faces; groupOf(wall bits common to the
- *  face's nodes) gives their group. */
-template <int D> void markBoundary(HostMesh<D>& m, const std::function<int(int)>& groupOf)
-{
-    constexpr int NV = D + 1;
-    auto faceKey = [&](LO i, int k) { return ::faceKey<D>(m, i, k); };
-    std::map<std::array<LO, D>, int> count;
-    for (LO i = 0; i < m.nCells(); ++i)
-        for (int k = 0; k < NV; ++k)
-            ++count[faceKey(i, k)];
-    m.faceGroup.assign(m.cells.size(), -1);
-    for (LO i = 0; i < m.nCells(); ++i)
-        for (int k = 0; k < NV; ++k)
-        {
-            const auto key = faceKey(i, k);
-            ASSERT_LE(count[key], 2);
-            if (count[key] == 2)
-                continue;
-            int common = ~0;
-            for (LO r : key)
-                common &= m.wall[r];
-            ASSERT_NE(common, 0) << "boundary face off the walls: the mesh is not conforming";
-            m.faceGroup[NV * i + k] = groupOf(common);
-        }
-}
-
-//! Wall index 0 .. 2D-1 (x=0, x=1, y=0, ...) of a face from its common wall bits.
-int wallGroup(int common)
-{
-    int g = 0;
-    while (!(common & (1 << g)))
-        ++g;
-    return g;
-}
+using unilag_test::connect;
+using unilag_test::cubeMesh;
+using unilag_test::HostMesh;
+using unilag_test::squareMesh;
+using unilag_test::wallGroup;
 
 // ---- the kernels' data ----
 
@@ -168,10 +36,6 @@ template <int D> struct Hydro
     static constexpr int NV = D + 1;
 
     LO nCells, nNodes;
-    Kokkos::View<LO**, Kokkos::LayoutLeft, MemSpace> cellNodes;
-    unilag::View<LO*> offsets, corners;
-    unilag::View<int**> faceGroup;
-    unilag::View<LO**> neighbour;
     unilag::MeshView<D> mesh;
     unilag::BoundaryView bc;
     unilag::View<int*> cellMaterial;
@@ -184,63 +48,14 @@ template <int D> struct Hydro
 
     //! bcs: type and imposed velocity per boundary group.
     Hydro(const HostMesh<D>& h, double gamma, const std::vector<std::pair<int, std::array<double, 3>>>& bcs)
-        : nCells(h.nCells()), nNodes(h.nNodes()), cellNodes("cellNodes", nCells, NV), offsets("offsets", nNodes + 1),
-          corners("corners", nCells * NV), faceGroup("faceGroup", nCells, NV), cellMaterial("cellMaterial", nCells),
-          materials("materials", 1), x("x", nNodes, D), xNew("xNew", nNodes, D), state("state", nCells, S::ncomp),
-          stateNew("stateNew", nCells, S::ncomp), aux("aux", nCells, unilag::Aux::ncomp<unilag::PhysicsHydro>()), vnode("vnode", nNodes, D),
-          fnode("fnode", nNodes, D), grad("grad", nCells, unilag::ReconLayout<D, unilag::PhysicsHydro>::ncomp),
-          geom(nCells, D), mass("mass", nCells)
+        : nCells(h.nCells()), nNodes(h.nNodes()), cellMaterial("cellMaterial", nCells), materials("materials", 1),
+          x("x", nNodes, D), xNew("xNew", nNodes, D), state("state", nCells, S::ncomp),
+          stateNew("stateNew", nCells, S::ncomp), aux("aux", nCells, unilag::Aux::ncomp<unilag::PhysicsHydro>()),
+          vnode("vnode", nNodes, D), fnode("fnode", nNodes, D),
+          grad("grad", nCells, unilag::ReconLayout<D, unilag::PhysicsHydro>::ncomp), geom(nCells, D),
+          mass("mass", nCells)
     {
-        neighbour = unilag::View<LO**>("neighbour", nCells, NV);
-        {
-            // face neighbours: the other cell with the same sorted node set opposite local node k
-            std::map<std::array<LO, D>, std::pair<LO, int>> open;
-            auto nb = Kokkos::create_mirror_view(neighbour);
-            Kokkos::deep_copy(nb, -1);
-            for (LO i = 0; i < nCells; ++i)
-                for (int k = 0; k < NV; ++k)
-                {
-                    const auto key = faceKey<D>(h, i, k);
-                    auto it = open.find(key);
-                    if (it == open.end())
-                        open[key] = {i, k};
-                    else
-                    {
-                        nb(i, k) = it->second.first;
-                        nb(it->second.first, it->second.second) = i;
-                    }
-                }
-            Kokkos::deep_copy(neighbour, nb);
-        }
-        auto cn = Kokkos::create_mirror_view(cellNodes);
-        auto fg = Kokkos::create_mirror_view(faceGroup);
-        auto off = Kokkos::create_mirror_view(offsets);
-        auto cor = Kokkos::create_mirror_view(corners);
-        // node -> corner CSR; filling cell by cell keeps each node's corners sorted by cell id
-        for (LO i = 0; i < nCells; ++i)
-            for (int k = 0; k < NV; ++k)
-            {
-                cn(i, k) = h.cells[NV * i + k];
-                fg(i, k) = h.faceGroup[NV * i + k];
-                ++off(cn(i, k) + 1);
-            }
-        for (LO r = 0; r < nNodes; ++r)
-            off(r + 1) += off(r);
-        std::vector<LO> fill(off.data(), off.data() + nNodes);
-        for (LO i = 0; i < nCells; ++i)
-            for (int k = 0; k < NV; ++k)
-                cor(fill[cn(i, k)]++) = i * NV + k;
-        Kokkos::deep_copy(cellNodes, cn);
-        Kokkos::deep_copy(faceGroup, fg);
-        Kokkos::deep_copy(offsets, off);
-        Kokkos::deep_copy(corners, cor);
-        mesh.cellNodes = cellNodes;
-        mesh.nodeCornerOffsets = offsets;
-        mesh.nodeCorners = corners;
-        mesh.cellFaceGroup = faceGroup;
-        mesh.cellNeighbour = neighbour;
-        mesh.nOwnedCells = mesh.nCells = nCells;
-        mesh.nOwnedNodes = mesh.nNodes = nNodes;
+        mesh = unilag_test::deviceMesh<D>(h, x);
 
         unilag::View<int*> type("bcType", bcs.size());
         Kokkos::View<double* [3], MemSpace> value("bcValue", bcs.size());
@@ -261,12 +76,6 @@ template <int D> struct Hydro
         mh(0) = unilag::fluidMaterial(unilag::gpr::idealGasEos(gamma, 1.0));
         Kokkos::deep_copy(materials, mh);
         Kokkos::deep_copy(cellMaterial, 0);
-
-        auto xh = Kokkos::create_mirror_view(x);
-        for (LO r = 0; r < nNodes; ++r)
-            for (int d = 0; d < D; ++d)
-                xh(r, d) = h.x[D * r + d];
-        Kokkos::deep_copy(x, xh);
     }
 
     //! Geometry and EOS of the current configuration; returns the smallest volume.
@@ -283,7 +92,7 @@ template <int D> struct Hydro
         ASSERT_GT(unilag::computeGeometry<D>(mesh, x, geom, nCells), 0.0) << "the distorted mesh is tangled";
         auto xh = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), x);
         auto vol = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), geom.volume);
-        auto cn = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), cellNodes);
+        auto cn = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), mesh.cellNodes);
         auto sh = Kokkos::create_mirror_view(state);
         auto mh = Kokkos::create_mirror_view(mass);
         for (LO i = 0; i < nCells; ++i)
@@ -321,10 +130,10 @@ template <int D> struct Hydro
         unilag::nodalSolve<D>(mesh, bc, state, aux, geom, vnode, fnode, unilag::ConstField(), rec);
         dt = unilag::stableTimeStep<D>(mesh, aux, geom, vnode, 0.5, 0.1);
         unilag::moveNodes(x, vnode, dt, xNew, nNodes, D);
-        const auto check = unilag::updateCells<D>(mesh, state, aux, geom, mass, cellMaterial, materials, x, xNew,
-                                                  vnode, dt, stateNew, unilag::ConstField(), unilag::ConstField(),
-                                                  unilag::CellGeometry(),
-                                                  unilag::CellFlux<D>{state, aux, unilag::ConstField(), geom, rec});
+        const auto check =
+            unilag::updateCells<D>(mesh, state, aux, geom, mass, cellMaterial, materials, x, xNew, vnode, dt, stateNew,
+                                   unilag::ConstField(), unilag::ConstField(), unilag::CellGeometry(),
+                                   unilag::CellFlux<D>{state, aux, unilag::ConstField(), geom, rec});
         std::swap(state, stateNew);
         std::swap(x, xNew);
         refresh();
@@ -360,7 +169,7 @@ template <int D> void checkFreeStream(HostMesh<D> h, const std::array<double, 3>
 {
     using S = unilag::HydroState<D>;
     const double gamma = 1.4, rho0 = 1.0, p0 = 1.0;
-    ASSERT_NO_FATAL_FAILURE(markBoundary<D>(h, [](int) { return 0; }));
+    ASSERT_NO_FATAL_FAILURE(connect<D>(h, [](int) { return 0; }));
     Hydro<D> hydro(h, gamma, {{BcVelocity, u}});
     hydro.order2 = order2;
     ASSERT_NO_FATAL_FAILURE(hydro.initialize(
@@ -414,9 +223,9 @@ template <int D> void checkConservation(HostMesh<D> h, int steps, bool oneGroup 
 {
     const double gamma = 1.4, pi = std::acos(-1.0);
     if (oneGroup)
-        ASSERT_NO_FATAL_FAILURE(markBoundary<D>(h, [](int common) { return wallGroup(common) >= 0 ? 0 : -1; }));
+        ASSERT_NO_FATAL_FAILURE(connect<D>(h, [](int common) { return wallGroup(common) >= 0 ? 0 : -1; }));
     else
-        ASSERT_NO_FATAL_FAILURE(markBoundary<D>(h, wallGroup)); // groups 0 .. 2D-1: x = 0, x = 1, y = 0, ...
+        ASSERT_NO_FATAL_FAILURE(connect<D>(h, wallGroup)); // groups 0 .. 2D-1: x = 0, x = 1, y = 0, ...
     const std::array<double, 3> none{0.0, 0.0, 0.0};
     Hydro<D> hydro(h, gamma, std::vector<std::pair<int, std::array<double, 3>>>(2 * D, {BcSlipWall, none}));
     hydro.order2 = order2;
@@ -497,7 +306,7 @@ template <int D> void checkReconstruction(HostMesh<D> h)
     const double gamma = 1.4;
     const double g[3] = {0.3, -0.7, 0.45};
     const double A[3][3] = {{0.2, -0.5, 0.1}, {0.4, 0.3, -0.2}, {-0.1, 0.25, 0.6}};
-    ASSERT_NO_FATAL_FAILURE(markBoundary<D>(h, [](int) { return 0; }));
+    ASSERT_NO_FATAL_FAILURE(connect<D>(h, [](int) { return 0; }));
     Hydro<D> hydro(h, gamma, {{BcSlipWall, {0.0, 0.0, 0.0}}});
     ASSERT_NO_FATAL_FAILURE(hydro.initialize(
         [&](const double* c, double& rho, double& p, double* v)
@@ -514,8 +323,7 @@ template <int D> void checkReconstruction(HostMesh<D> h)
         },
         gamma));
     unilag::limitedGradients<D, unilag::PhysicsHydro>(hydro.mesh, hydro.state, hydro.aux, unilag::ConstField(),
-                                                      hydro.geom, hydro.x, hydro.grad, unilag::BoundaryView(),
-                                                      false);
+                                                      hydro.geom, hydro.x, hydro.grad, unilag::BoundaryView(), false);
     auto gr = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), hydro.grad);
     for (LO i = 0; i < hydro.nCells; ++i)
         for (int a = 0; a < D; ++a)
@@ -531,8 +339,8 @@ template <int D> void checkReconstruction(HostMesh<D> h)
     auto aux = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), hydro.aux);
     auto xh = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), hydro.x);
     auto ch = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), hydro.geom.centroid);
-    auto cn = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), hydro.cellNodes);
-    auto nb = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), hydro.neighbour);
+    auto cn = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), hydro.mesh.cellNodes);
+    auto nb = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), hydro.mesh.cellNeighbour);
     double kept = 0.0, gnorm = 0.0;
     for (int a = 0; a < D; ++a)
         gnorm += g[a] * g[a];
