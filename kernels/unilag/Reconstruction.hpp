@@ -163,7 +163,8 @@ KOKKOS_INLINE_FUNCTION Vec<D> faceUnitNormal(const MeshView<D>& mesh, const Cons
  *  pressure linear up to the boundaries and made Kidder's radii accurate on a polar mesh, but its outer surface grew
  *  spikes and a corner jet from 12k cells, and 2D Sedov got noisier (L1 0.055 against 0.033); unlimited pressure
  *  alike; unlimited or vertex-bounded velocity tangled Kidder's shell at once.
- *  Imposed boundary pressures (bc, if given) are boundary values of the pressure: a vertex on a face with an imposed
+ *  With bc given, slip walls and symmetry planes mirror the cell (file comment), and imposed boundary pressures are
+ *  boundary values of the pressure: a vertex on a face with an imposed
  *  pressure may take values up to it. Without this the limiter clips every monotone pressure profile at such a
  *  boundary to first order, and the boundary node sees the cell-centre pressure (Kidder's shell, 3k-cell polar mesh:
  *  inner radius error -7.8 % without, -5.1 % with; first order -7.7 %). */
