@@ -161,13 +161,13 @@ KOKKOS_INLINE_FUNCTION Vec<D> faceUnitNormal(const MeshView<D>& mesh, const Cons
  *  gradients (exact for linear fields; for tests and smooth-solution studies).
  *  Measured alternatives for the pressure alone: bounds per vertex over the cells around it (Kuzmin) keep a smooth
  *  pressure linear up to the boundaries and made Kidder's radii accurate on a polar mesh, but its outer surface grew
- *  spikes and a corner jet from 12k cells, and 2D Sedov got noisier (L1 0.055 against 0.033); unlimited pressure
- *  alike; unlimited or vertex-bounded velocity tangled Kidder's shell at once.
+ *  spikes from 12k cells, and 2D Sedov got noisier (L1 0.055 against 0.033); unlimited pressure alike; unlimited or
+ *  vertex-bounded velocity tangled Kidder's shell at once.
  *  With bc given, slip walls and symmetry planes mirror the cell (file comment), and imposed boundary pressures are
- *  boundary values of the pressure: a vertex on a face with an imposed
- *  pressure may take values up to it. Without this the limiter clips every monotone pressure profile at such a
- *  boundary to first order, and the boundary node sees the cell-centre pressure (Kidder's shell, 3k-cell polar mesh:
- *  inner radius error -7.8 % without, -5.1 % with; first order -7.7 %). */
+ *  boundary values of the pressure: a vertex on a face with an imposed pressure may take values up to it. Without
+ *  this the limiter clips every monotone pressure profile at such a boundary to first order, and the boundary node
+ *  sees the cell-centre pressure (Kidder's shell, 3k-cell polar mesh: inner radius error -7.8 % without, -5.1 % with;
+ *  first order -7.7 %). */
 template <int D, class P>
 void limitedGradients(const MeshView<D>& mesh, const ConstField& state, const ConstField& aux,
                       const ConstField& stress, const CellGeometry& geom, const ConstField& x, const Field& grad,
@@ -211,37 +211,32 @@ void limitedGradients(const MeshView<D>& mesh, const ConstField& state, const Co
                     rhs[q] = rhs[q] + (w * (wj[q] - wi[q])) * d;
             }
         }
-        // Slip walls and symmetry planes: the cell's mirror image across the face joins the stencil (weight of a
-        // face neighbour) and the bounds, so that boundary cells see the reflected flow as a neighbour would.
-        for (int f = 0; f < NV && hasBc; ++f)
+        // Bounds over the face neighbours. Across a slip wall or symmetry plane the cell's mirror image stands in for
+        // the neighbour, and joins the stencil too (with a face neighbour's weight), as in the symmetric flow.
+        for (int f = 0; f < NV; ++f)
         {
-            const int g = mesh.cellFaceGroup(i, f);
-            if (g < 0 || bc.type(g) != BcSlipWall)
-                continue;
-            LO vertex;
-            const Vec<D> n = faceUnitNormal<D>(mesh, x, i, f, vertex);
-            double h = 0.0;
-            for (int a = 0; a < D; ++a)
-                h += (xi[a] - x(vertex, a)) * n[a];
-            const Vec<D> d = (-2.0 * h) * n;
-            const double w = double(D) / dot(d, d);
-            A.addOuter(w, d);
-            for (int q = 0; q < NQ; ++q)
-                wj[q] = wi[q];
-            mirrorValues<D, P>(n, wj);
-            for (int q = 0; q < NQ; ++q)
+            const LO j = mesh.cellNeighbour(i, f);
+            if (j >= 0)
+                reconValues<D, P>(state, aux, stress, j, wj);
+            else
             {
-                rhs[q] = rhs[q] + (w * (wj[q] - wi[q])) * d;
-                wmin[q] = Kokkos::Experimental::fmin(wmin[q], wj[q]);
-                wmax[q] = Kokkos::Experimental::fmax(wmax[q], wj[q]);
+                const int g = hasBc ? mesh.cellFaceGroup(i, f) : -1;
+                if (g < 0 || bc.type(g) != BcSlipWall)
+                    continue;
+                LO vertex;
+                const Vec<D> n = faceUnitNormal<D>(mesh, x, i, f, vertex);
+                double h = 0.0;
+                for (int a = 0; a < D; ++a)
+                    h += (xi[a] - x(vertex, a)) * n[a];
+                const Vec<D> d = (-2.0 * h) * n;
+                const double w = double(D) / dot(d, d);
+                A.addOuter(w, d);
+                for (int q = 0; q < NQ; ++q)
+                    wj[q] = wi[q];
+                mirrorValues<D, P>(n, wj);
+                for (int q = 0; q < NQ; ++q)
+                    rhs[q] = rhs[q] + (w * (wj[q] - wi[q])) * d;
             }
-        }
-        for (int k = 0; k < NV; ++k)
-        {
-            const LO j = mesh.cellNeighbour(i, k);
-            if (j < 0)
-                continue;
-            reconValues<D, P>(state, aux, stress, j, wj);
             for (int q = 0; q < NQ; ++q)
             {
                 wmin[q] = Kokkos::Experimental::fmin(wmin[q], wj[q]);
