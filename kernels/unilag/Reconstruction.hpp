@@ -158,16 +158,14 @@ KOKKOS_INLINE_FUNCTION Vec<D> faceUnitNormal(const MeshView<D>& mesh, const Cons
 /*! \brief Limited gradients of the owned cells (gpr.md 2.5) into grad (cells x ReconLayout::ncomp), from the cell
  *  values of all local cells (state and aux current for ghosts too, stress: the shear stress, strain variants) on
  *  the configuration x with geometry geom (centroids of all local cells). limit = false gives the plain least-squares
- *  gradients (exact for linear fields; for tests and smooth-solution studies).
- *  Measured alternatives for the pressure alone: bounds per vertex over the cells around it (Kuzmin) keep a smooth
- *  pressure linear up to the boundaries and made Kidder's radii accurate on a polar mesh, but its outer surface grew
- *  spikes from 12k cells, and 2D Sedov got noisier (L1 0.055 against 0.033); unlimited pressure alike; unlimited or
- *  vertex-bounded velocity tangled Kidder's shell at once.
- *  With bc given, slip walls and symmetry planes mirror the cell (file comment), and imposed boundary pressures are
- *  boundary values of the pressure: a vertex on a face with an imposed pressure may take values up to it. Without
- *  this the limiter clips every monotone pressure profile at such a boundary to first order, and the boundary node
- *  sees the cell-centre pressure (Kidder's shell, 3k-cell polar mesh: inner radius error -7.8 % without, -5.1 % with;
- *  first order -7.7 %). */
+ *  gradients (exact for linear fields; scheme.limiter: none, for shock-free flows, and tests).
+ *  The Barth-Jespersen bounds are the extrema of the cell and its face neighbours. Wider ones (the node-neighbour
+ *  stencil's, or per vertex over the cells around it) keep smooth profiles better but made 2D Sedov noisy and
+ *  tangled a 3D one (README, Limiter).
+ *  With bc given, slip walls and symmetry planes mirror the cell (file comment), and an imposed boundary pressure is
+ *  boundary data of the pressure: a point of its least-squares fit at the face centroid, and a bound of the face's
+ *  vertices (without the bound the limiter clips every monotone pressure profile at such a boundary to first
+ *  order; without the fit Kidder's unlimited shell tangled on coarse meshes). */
 template <int D, class P>
 void limitedGradients(const MeshView<D>& mesh, const ConstField& state, const ConstField& aux,
                       const ConstField& stress, const CellGeometry& geom, const ConstField& x, const Field& grad,
@@ -248,6 +246,8 @@ void limitedGradients(const MeshView<D>& mesh, const ConstField& state, const Co
             pmin[k] = wmin[R::pressure];
             pmax[k] = wmax[R::pressure];
         }
+        Mat<D> Ap = A;                   // the pressure's own fit: imposed boundary pressures are data at their faces
+        Vec<D> rhsp = rhs[R::pressure];
         if (hasBc)
             for (int f = 0; f < NV; ++f)
             {
@@ -255,6 +255,15 @@ void limitedGradients(const MeshView<D>& mesh, const ConstField& state, const Co
                 if (g < 0 || bc.type(g) != BcPressure)
                     continue;
                 const double pb = bc.value(g, 0);
+                Vec<D> d = Vec<D>::zero(); // face centroid - cell centroid
+                for (int k = 0; k < NV; ++k)
+                    if (k != f)
+                        for (int a = 0; a < D; ++a)
+                            d[a] += x(mesh.cellNodes(i, k), a) / D;
+                d = d - xi;
+                const double w = double(D) / dot(d, d); // as a face neighbour (D shared vertices) at its distance
+                Ap.addOuter(w, d);
+                rhsp = rhsp + (w * (pb - wi[R::pressure])) * d;
                 for (int k = 0; k < NV; ++k) // the vertices of face f
                     if (k != f)
                     {
@@ -283,7 +292,7 @@ void limitedGradients(const MeshView<D>& mesh, const ConstField& state, const Co
         }
         for (int q = 0; q < NQ; ++q)
         {
-            const Vec<D> g = spans ? solve(A, rhs[q]) : Vec<D>::zero();
+            const Vec<D> g = !spans ? Vec<D>::zero() : q == R::pressure ? solve(Ap, rhsp) : solve(A, rhs[q]);
             // Barth-Jespersen: the largest phi in [0, 1] that keeps every vertex value within [wmin, wmax].
             double phi = 1.0;
             for (int k = 0; k < NV && limit; ++k)

@@ -463,6 +463,93 @@ TEST(HydroKernels, ReconstructionMirrorsSlipWalls3D)
     checkMirror<3>(cubeMesh(4, 0.2, 42));
 }
 
+/*! An imposed boundary pressure is a data point of the pressure's least-squares fit at the face centroid. A linear
+ *  pressure that takes the imposed value on the wall x = 0 stays exact in every cell; for p = 1 + 3 x^2 (imposed 1
+ *  at x = 0) the wall cells' reconstruction at their wall vertices (where the nodal solver reads it) is closer to the
+ *  imposed value with the boundary value in the fit than without it. */
+template <int D> void checkImposedPressureFit(HostMesh<D> h)
+{
+    using R = unilag::ReconLayout<D, unilag::PhysicsHydro>;
+    const double gamma = 1.4;
+    ASSERT_NO_FATAL_FAILURE(connect<D>(h, wallGroup)); // groups 0 .. 2D-1: x = 0, x = 1, y = 0, ...
+    std::vector<std::pair<int, std::array<double, 3>>> bcs(2 * D, {unilag::BcFree, {0.0, 0.0, 0.0}});
+    for (const bool linear : {true, false})
+    {
+        bcs[0] = {unilag::BcPressure, {linear ? 2.0 : 1.0, 0.0, 0.0}};
+        Hydro<D> hydro(h, gamma, bcs);
+        ASSERT_NO_FATAL_FAILURE(hydro.initialize(
+            [&](const double* c, double& rho, double& p, double* v)
+            {
+                rho = 1.0;
+                p = linear ? 2.0 + 0.5 * c[0] : 1.0 + 3.0 * c[0] * c[0];
+                for (int a = 0; a < D; ++a)
+                    v[a] = 0.0;
+            },
+            gamma));
+        auto fg = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), hydro.mesh.cellFaceGroup);
+        auto ch = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), hydro.geom.centroid);
+        auto cn = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), hydro.mesh.cellNodes);
+        auto xh = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), hydro.x);
+        auto aux = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), hydro.aux);
+        // mean error of the wall cells' pressure at their wall vertices (and every cell's gradient must be exact for
+        // the linear field)
+        auto wallError = [&](const unilag::BoundaryView& bc, int& wallCells)
+        {
+            unilag::limitedGradients<D, unilag::PhysicsHydro>(hydro.mesh, hydro.state, hydro.aux,
+                                                              unilag::ConstField(), hydro.geom, hydro.x, hydro.grad,
+                                                              bc, false);
+            auto gr = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), hydro.grad);
+            double err = 0.0;
+            wallCells = 0;
+            for (LO i = 0; i < hydro.nCells; ++i)
+            {
+                if (linear)
+                {
+                    for (int a = 0; a < D; ++a)
+                    {
+                        EXPECT_NEAR(gr(i, R::pressure * D + a), a == 0 ? 0.5 : 0.0, 1e-12) << "cell " << i;
+                    }
+                }
+                for (int f = 0; f < D + 1; ++f)
+                    if (fg(i, f) == 0)
+                    {
+                        ++wallCells;
+                        for (int k = 0; k < D + 1; ++k)
+                            if (k != f)
+                            {
+                                double pv = aux(i, unilag::Aux::pressure);
+                                for (int a = 0; a < D; ++a)
+                                    pv += gr(i, R::pressure * D + a) * (xh(cn(i, k), a) - ch(i, a));
+                                err += std::abs(pv - bcs[0].second[0]) / D;
+                            }
+                    }
+            }
+            return err / std::max(wallCells, 1);
+        };
+        int wallCells = 0;
+        const double errWith = wallError(hydro.bc, wallCells);
+        const double errWithout = wallError(unilag::BoundaryView(), wallCells);
+        if (!linear)
+        {
+            ASSERT_GT(wallCells, 0);
+            std::printf("pressure error at the wall vertices, mean: %.2e with the boundary value, %.2e without\n",
+                        errWith, errWithout);
+            // measured 0.69 (2D) and 0.79 (3D) of the error without; 1 if the boundary value were not used
+            EXPECT_LT(errWith, 0.85 * errWithout);
+        }
+    }
+}
+
+TEST(HydroKernels, ReconstructionFitsImposedPressures2D)
+{
+    checkImposedPressureFit<2>(squareMesh(10, 0.3, 43));
+}
+
+TEST(HydroKernels, ReconstructionFitsImposedPressures3D)
+{
+    checkImposedPressureFit<3>(cubeMesh(4, 0.2, 44));
+}
+
 TEST(HydroKernels, FreeStreamPreservedSecondOrder2D)
 {
     checkFreeStream<2>(squareMesh(12, 0.3, 2024), {1.0, 0.5, 0.0}, true);
