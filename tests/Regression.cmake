@@ -62,6 +62,9 @@ add_test(NAME error_negative_density COMMAND bash ${SCRIPTS}/expect_error.sh ${W
          "sedov2d.yaml: key 'regions.gas.density': must be positive" -- ${UNILAG} run ${INPUTS}/sedov2d.yaml --set regions.gas.density=-1.0)
 add_test(NAME error_missing_mesh COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err5 "key 'mesh.geometry': file not found"
          -- ${UNILAG} run ${INPUTS}/sedov2d.yaml --set mesh.geometry=nowhere.geo)
+add_test(NAME error_limiter COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err7
+         "sedov2d.yaml: key 'scheme.limiter': 'minmod' is not one of: barth_jespersen, none"
+         -- ${UNILAG} run ${INPUTS}/sedov2d.yaml --set scheme.limiter=minmod)
 add_test(NAME error_mpi_unknown_key COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err6 "key 'time.max_stpes'"
          -- ${MPI_RUN} 2 ${UNILAG} run ${SCENES}/unknown_key.yaml)
 # Bad physical input of the GPR model: the scene reader names the key before the solver starts.
@@ -85,7 +88,7 @@ set_tests_properties(error_gamma error_negative_csh error_negative_tau error_unk
 add_test(NAME unstable_diagnosis COMMAND bash ${SCRIPTS}/expect_unstable.sh ${WORK}/unstable
          -- ${UNILAG} run ${SCENES}/piston_collapse.yaml --quiet)
 set_tests_properties(error_malformed_scene error_unknown_key error_inverted_mesh error_negative_density
-                     error_missing_mesh error_mpi_unknown_key unstable_diagnosis PROPERTIES LABELS regression)
+                     error_missing_mesh error_limiter error_mpi_unknown_key unstable_diagnosis PROPERTIES LABELS regression)
 
 # Output: the HDF5/XDMF writer on 1-3 ranks, and ParaView (pvpython) opens a run and reads density back.
 add_executable(xdmf_writer_standalone io/xdmf_writer_standalone.cpp)

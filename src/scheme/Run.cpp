@@ -862,7 +862,7 @@ class GprSolver
         {
             ScopedTimer timer(timers_.recon);
             auto g = grad_->getLocalViewDevice(Tpetra::Access::ReadWrite);
-            limitedGradients<D, P>(m_, sm, auxMid_, sigmaMid_, geomMid_, xm, g, bc_);
+            limitedGradients<D, P>(m_, sm, auxMid_, sigmaMid_, geomMid_, xm, g, bc_, scene_.limit);
         }
         {
             ScopedTimer timer(timers_.halo);
