@@ -155,13 +155,20 @@ KOKKOS_INLINE_FUNCTION Vec<D> faceUnitNormal(const MeshView<D>& mesh, const Cons
     return (1.0 / norm(n)) * n;
 }
 
+/*! Limiter of the second-order reconstruction (scene key scheme.limiter). Barth-Jespersen in both bounded forms:
+ *  each vertex value stays within the extrema of the cell and its face neighbours (BarthJespersen), and for
+ *  VertexBased also of every cell around that vertex (linearity-preserving in the interior, after Kuzmin). */
+enum class Limiter
+{
+    None,
+    BarthJespersen,
+    VertexBased
+};
+
 /*! \brief Limited gradients of the owned cells (gpr.md 2.5) into grad (cells x ReconLayout::ncomp), from the cell
  *  values of all local cells (state and aux current for ghosts too, stress: the shear stress, strain variants) on
- *  the configuration x with geometry geom (centroids of all local cells). limit = false gives the plain least-squares
- *  gradients (exact for linear fields; scheme.limiter: none, for shock-free flows, and tests).
- *  The Barth-Jespersen bounds are the extrema of the cell and its face neighbours. Wider ones (the node-neighbour
- *  stencil's, or per vertex over the cells around it) keep smooth profiles better but made 2D Sedov noisy and
- *  tangled a 3D one (README, Limiter).
+ *  the configuration x with geometry geom (centroids of all local cells). Limiter::None gives the plain
+ *  least-squares gradients (exact for linear fields). Which limiter for which flow: README, Limiter.
  *  With bc given, slip walls and symmetry planes mirror the cell (file comment), and an imposed boundary pressure is
  *  boundary data of the pressure: a point of its least-squares fit at the face centroid, and a bound of the face's
  *  vertices (without the bound the limiter clips every monotone pressure profile at such a boundary to first
@@ -169,17 +176,20 @@ KOKKOS_INLINE_FUNCTION Vec<D> faceUnitNormal(const MeshView<D>& mesh, const Cons
 template <int D, class P>
 void limitedGradients(const MeshView<D>& mesh, const ConstField& state, const ConstField& aux,
                       const ConstField& stress, const CellGeometry& geom, const ConstField& x, const Field& grad,
-                      const BoundaryView& bc = BoundaryView(), bool limit = true)
+                      const BoundaryView& bc = BoundaryView(), Limiter limiter = Limiter::BarthJespersen)
 {
     using R = ReconLayout<D, P>;
     constexpr int NV = D + 1;
     constexpr int NQ = R::nq;
     auto centroid = geom.centroid;
     const bool hasBc = bc.type.extent(0) > 0;
+    const bool limit = limiter != Limiter::None;
+    const bool perVertex = limiter == Limiter::VertexBased;
     auto gradient = KOKKOS_LAMBDA(const LO i)
     {
         double wi[NQ], wj[NQ], wmin[NQ], wmax[NQ]; // wmin, wmax: over the cell and its face neighbours
         double pmin[NV], pmax[NV];                  // pressure bounds per vertex, with imposed boundary pressures
+        double vmin[NV][NQ], vmax[NV][NQ];          // VertexBased: over the cells around each vertex
         Vec<D> rhs[NQ];
         reconValues<D, P>(state, aux, stress, i, wi);
         for (int q = 0; q < NQ; ++q)
@@ -193,6 +203,8 @@ void limitedGradients(const MeshView<D>& mesh, const ConstField& state, const Co
         Mat<D> A = Mat<D>::zero();
         for (int k = 0; k < NV; ++k)
         {
+            for (int q = 0; q < NQ; ++q)
+                vmin[k][q] = vmax[k][q] = wi[q];
             const LO r = mesh.cellNodes(i, k);
             for (LO c = mesh.nodeCornerOffsets(r); c < mesh.nodeCornerOffsets(r + 1); ++c)
             {
@@ -207,6 +219,12 @@ void limitedGradients(const MeshView<D>& mesh, const ConstField& state, const Co
                 reconValues<D, P>(state, aux, stress, j, wj);
                 for (int q = 0; q < NQ; ++q)
                     rhs[q] = rhs[q] + (w * (wj[q] - wi[q])) * d;
+                if (perVertex)
+                    for (int q = 0; q < NQ; ++q)
+                    {
+                        vmin[k][q] = Kokkos::Experimental::fmin(vmin[k][q], wj[q]);
+                        vmax[k][q] = Kokkos::Experimental::fmax(vmax[k][q], wj[q]);
+                    }
             }
         }
         // Bounds over the face neighbours. Across a slip wall or symmetry plane the cell's mirror image stands in for
@@ -293,13 +311,18 @@ void limitedGradients(const MeshView<D>& mesh, const ConstField& state, const Co
         for (int q = 0; q < NQ; ++q)
         {
             const Vec<D> g = !spans ? Vec<D>::zero() : q == R::pressure ? solve(Ap, rhsp) : solve(A, rhs[q]);
-            // Barth-Jespersen: the largest phi in [0, 1] that keeps every vertex value within [wmin, wmax].
+            // Barth-Jespersen: the largest phi in [0, 1] that keeps every vertex value within its bounds.
             double phi = 1.0;
             for (int k = 0; k < NV && limit; ++k)
             {
                 const double dw = dot(g, dx[k]);
-                const double hi = q == R::pressure ? pmax[k] : wmax[q];
-                const double lo = q == R::pressure ? pmin[k] : wmin[q];
+                double hi = q == R::pressure ? pmax[k] : wmax[q];
+                double lo = q == R::pressure ? pmin[k] : wmin[q];
+                if (perVertex)
+                {
+                    hi = Kokkos::Experimental::fmax(hi, vmax[k][q]);
+                    lo = Kokkos::Experimental::fmin(lo, vmin[k][q]);
+                }
                 if (dw > 0.0)
                     phi = Kokkos::Experimental::fmin(phi, (hi - wi[q]) / dw);
                 else if (dw < 0.0)

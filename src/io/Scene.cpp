@@ -691,7 +691,7 @@ Scene readScene(const std::string& file, const std::vector<std::string>& overrid
         s.picardTolerance = sch.positive("picard_tolerance", s.picardTolerance);
         s.picardMaxIterations = int(sch.integer("picard_max_iterations", s.picardMaxIterations, 1, 1000000));
         s.order = int(sch.integer("order", s.order, 1, 2));
-        s.limit = sch.choice("limiter", "barth_jespersen", {"barth_jespersen", "none"}) != "none";
+        s.limiter = sch.choice("limiter", s.limiter, {"barth_jespersen", "vertex_based", "none"});
         sch.rejectUnknown();
     }
     {

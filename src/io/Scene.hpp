@@ -106,7 +106,7 @@ struct Scene
     double picardTolerance = 1e-10; //!< max_i |sigma^{l+1} - sigma^l|_F / (rho_i a_i^2) to stop the Picard loop
     int picardMaxIterations = 50;   //!< cap: the step is cut and retried when it is reached
     int order = 1;                  //!< 1: first order; 2: limited linear reconstruction + midpoint predictor-corrector
-    bool limit = true;              //!< order 2: Barth-Jespersen limiter (scheme.limiter: none turns it off)
+    std::string limiter = "barth_jespersen"; //!< order 2: barth_jespersen | vertex_based | none
 
     std::string outputDirectory = "output";
     double outputInterval = 0.0; //!< 0: first and last state only

@@ -862,7 +862,7 @@ class GprSolver
         {
             ScopedTimer timer(timers_.recon);
             auto g = grad_->getLocalViewDevice(Tpetra::Access::ReadWrite);
-            limitedGradients<D, P>(m_, sm, auxMid_, sigmaMid_, geomMid_, xm, g, bc_, scene_.limit);
+            limitedGradients<D, P>(m_, sm, auxMid_, sigmaMid_, geomMid_, xm, g, bc_, limiter_);
         }
         {
             ScopedTimer timer(timers_.halo);
@@ -1319,6 +1319,9 @@ class GprSolver
     }
 
     const Scene& scene_;
+    const Limiter limiter_ = scene_.limiter == "none"           ? Limiter::None
+                             : scene_.limiter == "vertex_based" ? Limiter::VertexBased
+                                                                : Limiter::BarthJespersen;
     std::shared_ptr<DistributedMesh> mesh_;
     RunOptions options_;
     MPI_Comm comm_;
