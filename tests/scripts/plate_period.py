@@ -5,7 +5,10 @@ origin) against time, its zero crossings interpolated linearly, the period = 2 x
 crossings. Passes iff |period - EXPECTED_PERIOD| <= TOL * EXPECTED_PERIOD (and at least 3 crossings were found).
 EXPECTED_PERIOD comes from tests/scripts/plate_reference_period.py (28.89e-6 s for the scene's material).
 
-usage: plate_period.py OUTDIR EXPECTED_PERIOD TOL [RADIUS]
+With LO HI, the centre-velocity amplitude at the last extremum must also lie within [LO, HI] times the one at the
+first (numerical damping or growth of the mode).
+
+usage: plate_period.py OUTDIR EXPECTED_PERIOD TOL [RADIUS [LO HI]]
 """
 import glob
 import re
@@ -16,6 +19,7 @@ import numpy as np
 
 out, expected, tol = sys.argv[1], float(sys.argv[2]), float(sys.argv[3])
 radius = float(sys.argv[4]) if len(sys.argv) > 4 else 1.5e-3
+bounds = (float(sys.argv[5]), float(sys.argv[6])) if len(sys.argv) > 6 else None
 h5s = sorted(glob.glob(f"{out}/unilag_*.h5"))
 times, vc, vmean = [], [], []
 pick = None
@@ -49,9 +53,13 @@ if ok:
     print(f"half periods (us): {' '.join(f'{x * 1e6:.3f}' for x in halves)}")
     print(f"period {period * 1e6:.3f} us, expected {expected * 1e6:.3f} us: error {err:.2%} (tolerance {tol:.0%})")
     ok = err <= tol
-    # amplitude of the centre velocity at successive extrema, for information (numerical damping)
+    # amplitude of the centre velocity at successive extrema (numerical damping)
     ext = [np.max(np.abs(vc[(times >= a) & (times <= b)])) for a, b in zip(crossings, crossings[1:])]
     print("centre |v_y| extrema (m/s):", " ".join(f"{e:.3f}" for e in ext))
+    if bounds is not None:
+        ratio = ext[-1] / ext[0]
+        print(f"last / first extremum {ratio:.3f} (bounds {bounds[0]:g} .. {bounds[1]:g})")
+        ok = ok and bounds[0] <= ratio <= bounds[1]
 else:
     print("FAIL: fewer than 3 zero crossings; run longer")
 print("plate_period:", "PASS" if ok else "FAIL")
