@@ -203,8 +203,9 @@ void limitedGradients(const MeshView<D>& mesh, const ConstField& state, const Co
         Mat<D> A = Mat<D>::zero();
         for (int k = 0; k < NV; ++k)
         {
-            for (int q = 0; q < NQ; ++q)
-                vmin[k][q] = vmax[k][q] = wi[q];
+            if (perVertex)
+                for (int q = 0; q < NQ; ++q)
+                    vmin[k][q] = vmax[k][q] = wi[q];
             const LO r = mesh.cellNodes(i, k);
             for (LO c = mesh.nodeCornerOffsets(r); c < mesh.nodeCornerOffsets(r + 1); ++c)
             {
