@@ -345,20 +345,32 @@ template <int D> void checkReconstruction(HostMesh<D> h)
     for (int a = 0; a < D; ++a)
         gnorm += g[a] * g[a];
     gnorm = std::sqrt(gnorm);
-    for (LO i = 0; i < hydro.nCells; ++i)
+    // extrema of the pressure over cell i and its face neighbours
+    auto faceBounds = [&](LO i, double& lo, double& hi)
     {
-        double lo = aux(i, unilag::Aux::pressure), hi = lo;
+        lo = hi = aux(i, unilag::Aux::pressure);
         for (int k = 0; k < D + 1; ++k)
             if (nb(i, k) >= 0)
             {
                 lo = std::min(lo, aux(nb(i, k), unilag::Aux::pressure));
                 hi = std::max(hi, aux(nb(i, k), unilag::Aux::pressure));
             }
+    };
+    // the reconstructed pressure of cell i at its vertex k
+    auto vertexValue = [&](LO i, int k)
+    {
+        double w = aux(i, unilag::Aux::pressure);
+        for (int a = 0; a < D; ++a)
+            w += gr(i, R::pressure * D + a) * (xh(cn(i, k), a) - ch(i, a));
+        return w;
+    };
+    for (LO i = 0; i < hydro.nCells; ++i)
+    {
+        double lo, hi;
+        faceBounds(i, lo, hi);
         for (int k = 0; k < D + 1; ++k)
         {
-            double w = aux(i, unilag::Aux::pressure);
-            for (int a = 0; a < D; ++a)
-                w += gr(i, R::pressure * D + a) * (xh(cn(i, k), a) - ch(i, a));
+            const double w = vertexValue(i, k);
             EXPECT_GE(w, lo - 1e-14) << "cell " << i << " vertex " << k;
             EXPECT_LE(w, hi + 1e-14) << "cell " << i << " vertex " << k;
         }
@@ -395,19 +407,12 @@ template <int D> void checkReconstruction(HostMesh<D> h)
     double keptVertex = 0.0;
     for (LO i = 0; i < hydro.nCells; ++i)
     {
-        double lo = aux(i, unilag::Aux::pressure), hi = lo;
-        for (int k = 0; k < D + 1; ++k)
-            if (nb(i, k) >= 0)
-            {
-                lo = std::min(lo, aux(nb(i, k), unilag::Aux::pressure));
-                hi = std::max(hi, aux(nb(i, k), unilag::Aux::pressure));
-            }
+        double lo, hi;
+        faceBounds(i, lo, hi);
         bool interior = true;
         for (int k = 0; k < D + 1; ++k)
         {
-            double w = aux(i, unilag::Aux::pressure);
-            for (int a = 0; a < D; ++a)
-                w += gr(i, R::pressure * D + a) * (xh(cn(i, k), a) - ch(i, a));
+            const double w = vertexValue(i, k);
             EXPECT_GE(w, std::min(lo, nodeMin[cn(i, k)]) - 1e-14) << "cell " << i << " vertex " << k;
             EXPECT_LE(w, std::max(hi, nodeMax[cn(i, k)]) + 1e-14) << "cell " << i << " vertex " << k;
             interior = interior && h.wall[cn(i, k)] == 0;
