@@ -197,9 +197,15 @@ void limitedGradients(const MeshView<D>& mesh, const ConstField& state, const Co
             wmin[q] = wmax[q] = wi[q];
             rhs[q] = Vec<D>::zero();
         }
-        Vec<D> xi;
+        Vec<D> xi, dx[NV]; // centroid, and its offsets to the vertices
         for (int a = 0; a < D; ++a)
             xi[a] = centroid(i, a);
+        for (int k = 0; k < NV; ++k)
+        {
+            const LO r = mesh.cellNodes(i, k);
+            for (int a = 0; a < D; ++a)
+                dx[k][a] = x(r, a) - xi[a];
+        }
         Mat<D> A = Mat<D>::zero();
         for (int k = 0; k < NV; ++k)
         {
@@ -277,9 +283,7 @@ void limitedGradients(const MeshView<D>& mesh, const ConstField& state, const Co
                 Vec<D> d = Vec<D>::zero(); // face centroid - cell centroid
                 for (int k = 0; k < NV; ++k)
                     if (k != f)
-                        for (int a = 0; a < D; ++a)
-                            d[a] += x(mesh.cellNodes(i, k), a) / D;
-                d = d - xi;
+                        d = d + (1.0 / D) * dx[k];
                 const double w = double(D) / dot(d, d); // as a face neighbour (D shared vertices) at its distance
                 Ap.addOuter(w, d);
                 rhsp = rhsp + (w * (pb - wi[R::pressure])) * d;
@@ -302,13 +306,6 @@ void limitedGradients(const MeshView<D>& mesh, const ConstField& state, const Co
                   A.a[0][2] * (A.a[1][0] * A.a[2][1] - A.a[1][1] * A.a[2][0]);
         const double scale = trace / D;
         const bool spans = det > 1e-10 * (D == 2 ? scale * scale : scale * scale * scale);
-        Vec<D> dx[NV];
-        for (int k = 0; k < NV; ++k)
-        {
-            const LO r = mesh.cellNodes(i, k);
-            for (int a = 0; a < D; ++a)
-                dx[k][a] = x(r, a) - xi[a];
-        }
         for (int q = 0; q < NQ; ++q)
         {
             const Vec<D> g = !spans ? Vec<D>::zero() : q == R::pressure ? solve(Ap, rhsp) : solve(A, rhs[q]);
