@@ -1,0 +1,45 @@
+/*! \file Mpi.hpp
+ *  \brief The few MPI collectives the solvers need, in one place: the raw communicator of a Teuchos one,
+ *  reductions over ranks, the exclusive prefix sum of global numbering, and the first error message of any rank.
+ */
+#pragma once
+
+#ifndef OMPI_SKIP_MPICXX
+#define OMPI_SKIP_MPICXX 1 // C API only
+#endif
+#include <mpi.h>
+
+#include <string>
+
+#include <Teuchos_Comm.hpp>
+#include <Teuchos_RCP.hpp>
+
+namespace unilag::mpi
+{
+
+//! The MPI communicator behind a Teuchos one (MPI_COMM_SELF for a serial Teuchos comm).
+MPI_Comm rawComm(const Teuchos::RCP<const Teuchos::Comm<int>>& comm);
+
+int rank(MPI_Comm comm);
+int size(MPI_Comm comm);
+
+double allMin(MPI_Comm comm, double v);
+double allMax(MPI_Comm comm, double v);
+//! Sums n values in place over the ranks.
+void allSum(MPI_Comm comm, double* v, int n);
+template <int N>
+void allSum(MPI_Comm comm, double (&v)[N])
+{
+    allSum(comm, v, N);
+}
+
+//! Exclusive prefix sum of n over the ranks (0 on rank 0): rank p's first global index. Collective.
+long long exclusiveOffset(MPI_Comm comm, long long n);
+
+//! The rank holding the smallest value (the lowest such rank on ties), the same on every rank. Collective.
+int argMinRank(MPI_Comm comm, double v);
+
+//! The first non-empty message over the ranks (by rank), the same on every rank. Collective.
+std::string firstMessage(MPI_Comm comm, const std::string& local);
+
+} // namespace unilag::mpi
