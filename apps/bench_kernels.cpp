@@ -40,7 +40,7 @@
 #include <Kokkos_Core.hpp>
 #include <Tpetra_Core.hpp>
 
-#include "io/Scene.hpp"
+#include "config/Scene.hpp"
 #include "mesh/DistributedMesh.hpp"
 #include "mesh/GlobalMesh.hpp"
 #include "unilag/Heat.hpp"

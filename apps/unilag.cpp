@@ -10,8 +10,8 @@
 #include <Kokkos_Core.hpp>
 #include <Tpetra_Core.hpp>
 
-#include "io/Scene.hpp"
-#include "scheme/Run.hpp"
+#include "config/Scene.hpp"
+#include "solver/Run.hpp"
 #include "unilag/Types.hpp"
 
 namespace

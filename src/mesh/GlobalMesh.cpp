@@ -9,7 +9,7 @@
 
 #include <gmsh.h>
 
-#include "io/Scene.hpp"
+#include "config/Scene.hpp"
 
 namespace unilag
 {

@@ -4,7 +4,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "io/Scene.hpp"
+#include "config/Scene.hpp"
 
 namespace unilag
 {

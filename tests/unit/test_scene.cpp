@@ -1,4 +1,4 @@
-// Scene input (src/io/Scene.cpp) and mesh loading (src/mesh/GlobalMesh.cpp): a valid scene reads with the
+// Scene input (src/config/Scene.cpp) and mesh loading (src/mesh/GlobalMesh.cpp): a valid scene reads with the
 // expected values, --set overrides apply, and bad input of every kind raises InputError naming the file and
 // the key (or the element), never anything else.
 #include <gtest/gtest.h>
@@ -11,7 +11,7 @@
 
 #include <unistd.h>
 
-#include "io/Scene.hpp"
+#include "config/Scene.hpp"
 #include "mesh/GlobalMesh.hpp"
 
 namespace
@@ -187,7 +187,7 @@ TEST(Scene, ReadsSedovScene)
 
     ASSERT_EQ(s.materials.size(), 1u);
     const auto& gas = s.materials.at("gas");
-    EXPECT_EQ(gas.eos, "ideal_gas");
+    EXPECT_EQ(gas.eos, unilag::EosKind::IdealGas);
     EXPECT_DOUBLE_EQ(gas.gamma, 1.4);
     EXPECT_DOUBLE_EQ(gas.cv, 1.0); // default
 
@@ -208,9 +208,9 @@ TEST(Scene, ReadsSedovScene)
     EXPECT_DOUBLE_EQ(s.depositEnergy, 0.244816);
 
     ASSERT_EQ(s.boundaries.size(), 3u);
-    EXPECT_EQ(s.boundaries.at("axis_x").type, "symmetry");
-    EXPECT_EQ(s.boundaries.at("axis_y").type, "symmetry");
-    EXPECT_EQ(s.boundaries.at("outer").type, "slip_wall");
+    EXPECT_EQ(s.boundaries.at("axis_x").type, unilag::BoundaryKind::Symmetry);
+    EXPECT_EQ(s.boundaries.at("axis_y").type, unilag::BoundaryKind::Symmetry);
+    EXPECT_EQ(s.boundaries.at("outer").type, unilag::BoundaryKind::SlipWall);
 
     EXPECT_DOUBLE_EQ(s.endTime, 1.0);
     EXPECT_DOUBLE_EQ(s.cfl, 0.5);
@@ -222,7 +222,7 @@ TEST(Scene, ReadsSedovScene)
     EXPECT_DOUBLE_EQ(s.outputInterval, 0.1);
     EXPECT_TRUE(s.writeOutput);
 
-    EXPECT_EQ(s.exactSolution, "sedov");
+    EXPECT_EQ(s.exactSolution, unilag::ExactSolution::Sedov);
     EXPECT_EQ(s.exactTable, fs::path(kTable).lexically_normal().string());
     EXPECT_DOUBLE_EQ(s.exactShockRadius, 0.9988);
     EXPECT_DOUBLE_EQ(s.exactTime, 1.0); // default
@@ -241,7 +241,7 @@ TEST(Scene, ExpressionsAndVelocityBoundaries)
     EXPECT_EQ(p.text, "1 + 0.5 * x");
     EXPECT_DOUBLE_EQ(p.value, 1.0); // the value at the origin
     const auto& outer = s.boundaries.at("outer");
-    EXPECT_EQ(outer.type, "velocity");
+    EXPECT_EQ(outer.type, unilag::BoundaryKind::Velocity);
     EXPECT_DOUBLE_EQ(outer.velocity[0], 0.5);
     EXPECT_DOUBLE_EQ(outer.velocity[1], -1.0);
     EXPECT_DOUBLE_EQ(outer.velocity[2], 0.0);
@@ -271,11 +271,11 @@ TEST(Scene, GprDefaultsAreAnIdealFluid)
     const auto& gas = s.materials.at("gas");
     EXPECT_DOUBLE_EQ(gas.rho0, 1.0); // reference density of an ideal gas
     EXPECT_DOUBLE_EQ(gas.shearSpeed, 0.0);
-    EXPECT_EQ(gas.strainLaw, "fluid");
+    EXPECT_EQ(gas.strainLaw, unilag::RelaxationLaw::Fluid);
     EXPECT_DOUBLE_EQ(gas.tau1, 0.0);
     EXPECT_FALSE(gas.heatConduction);
     const auto& outer = s.boundaries.at("outer");
-    EXPECT_EQ(outer.thermal, "adiabatic");
+    EXPECT_EQ(outer.thermal, unilag::ThermalKind::Adiabatic);
     EXPECT_DOUBLE_EQ(outer.temperature, 0.0);
     EXPECT_DOUBLE_EQ(s.picardTolerance, 1e-10);
     EXPECT_EQ(s.picardMaxIterations, 50);
@@ -286,10 +286,10 @@ TEST(Scene, ReadsPlasticMaterial)
     TempDir dir;
     const unilag::Scene s = unilag::readScene(dir.write("scene.yaml", withMaterial(kPlastic)), {});
     const auto& be = s.materials.at("gas");
-    EXPECT_EQ(be.eos, "mie_gruneisen");
+    EXPECT_EQ(be.eos, unilag::EosKind::MieGruneisen);
     EXPECT_DOUBLE_EQ(be.rho0, 1845.0);
     EXPECT_DOUBLE_EQ(be.shearSpeed, 9070.0);
-    EXPECT_EQ(be.strainLaw, "plastic");
+    EXPECT_EQ(be.strainLaw, unilag::RelaxationLaw::Plastic);
     EXPECT_DOUBLE_EQ(be.tau10, 1.0);
     EXPECT_DOUBLE_EQ(be.yieldStress, 3.3e8);
     EXPECT_DOUBLE_EQ(be.exponent, 20.0);
@@ -322,15 +322,15 @@ TEST(Scene, StrainLawsGiveTau1)
 )";
     const unilag::Scene s = unilag::readScene(dir.write("scene.yaml", withMaterial(solids)), {});
     const auto& water = s.materials.at("water");
-    EXPECT_EQ(water.strainLaw, "viscous");
+    EXPECT_EQ(water.strainLaw, unilag::RelaxationLaw::Viscous);
     EXPECT_DOUBLE_EQ(water.viscosity, 0.02);
     EXPECT_DOUBLE_EQ(water.tau1, 6.0 * 0.02 / (1000.0 * 10.0 * 10.0)); // tau1 = 6 mu / (rho0 c_sh^2)
     const auto& steel = s.materials.at("steel");
-    EXPECT_EQ(steel.strainLaw, "elastic");
+    EXPECT_EQ(steel.strainLaw, unilag::RelaxationLaw::Elastic);
     EXPECT_TRUE(std::isinf(steel.tau1) && steel.tau1 > 0.0);
     EXPECT_DOUBLE_EQ(s.materials.at("hydro").tau1, 1e-14);
     EXPECT_DOUBLE_EQ(s.materials.at("stiff").tau1, 1e14);
-    EXPECT_EQ(s.materials.at("gas").strainLaw, "fluid");
+    EXPECT_EQ(s.materials.at("gas").strainLaw, unilag::RelaxationLaw::Fluid);
 }
 
 TEST(Scene, HeatConductionKappaAndTau2)
@@ -345,7 +345,7 @@ TEST(Scene, HeatConductionKappaAndTau2)
     EXPECT_DOUBLE_EQ(gas.kappa, 1e-2);
     EXPECT_DOUBLE_EQ(gas.tau2, 1e-2 * 1.0 / (2.0 * 2.0 * 1.0));
     EXPECT_DOUBLE_EQ(gas.cv, 2.5);
-    EXPECT_EQ(gas.strainLaw, "constant");
+    EXPECT_EQ(gas.strainLaw, unilag::RelaxationLaw::Constant);
     EXPECT_DOUBLE_EQ(gas.tau1, 1e-14);
 
     // tau2 given (and rho0, theta0 not 1): kappa = tau2 alpha^2 theta0 / rho0
@@ -367,14 +367,14 @@ TEST(Scene, TractionThermalBoundariesAndScheme)
     text = replaced(text, "  time: {", "  scheme: { picard_tolerance: 1e-8, picard_max_iterations: 20 }\n  time: {");
     const unilag::Scene s = unilag::readScene(dir.write("scene.yaml", text), {});
     const auto& outer = s.boundaries.at("outer");
-    EXPECT_EQ(outer.type, "traction");
+    EXPECT_EQ(outer.type, unilag::BoundaryKind::Traction);
     EXPECT_DOUBLE_EQ(outer.traction[0], 0.0);
     EXPECT_DOUBLE_EQ(outer.traction[1], -1e5);
     EXPECT_DOUBLE_EQ(outer.traction[2], 0.0);
-    EXPECT_EQ(outer.thermal, "adiabatic");
+    EXPECT_EQ(outer.thermal, unilag::ThermalKind::Adiabatic);
     const auto& wall = s.boundaries.at("axis_x");
-    EXPECT_EQ(wall.type, "slip_wall");
-    EXPECT_EQ(wall.thermal, "isothermal");
+    EXPECT_EQ(wall.type, unilag::BoundaryKind::SlipWall);
+    EXPECT_EQ(wall.thermal, unilag::ThermalKind::Isothermal);
     EXPECT_DOUBLE_EQ(wall.temperature, 300.0);
     EXPECT_DOUBLE_EQ(s.picardTolerance, 1e-8);
     EXPECT_EQ(s.picardMaxIterations, 20);

@@ -1,5 +1,6 @@
 /*! \file Scene.hpp
- *  \brief A scene (one YAML input file): reading with Teuchos' YAML parser, `--set` overrides, validation.
+ *  \brief The continuum (GPR) scene: one YAML file read by the shared walker (Walker.hpp), `--set` overrides,
+ *  validation, and every option string turned into an enum once.
  *
  *  Every key is checked against the schema in Scene.cpp: an unknown or misspelt key, a wrong type or an
  *  out-of-range value raises InputError naming the file and the key path, before anything is written.
@@ -14,27 +15,57 @@
 
 #include <Teuchos_ParameterList.hpp>
 
+#include "config/Walker.hpp"
+#include "core/Errors.hpp"
+#include "unilag/Reconstruction.hpp"
+
 namespace unilag
 {
 
-//! Bad input: the message names the file and the key (or element); the CLI prints it and exits with 2.
-class InputError : public std::runtime_error
+using config::Expr;
+
+enum class EosKind
 {
-  public:
-    using std::runtime_error::runtime_error;
+    IdealGas,
+    MieGruneisen,
+    NeoHookean
 };
 
-//! A scalar initial value: a constant or a muparser expression of x, y, z, r.
-struct Expr
+//! Strain relaxation laws of the scene (gpr.md 1.4); the kernels see StrainNone, StrainConstant or StrainPlastic.
+enum class RelaxationLaw
 {
-    std::string text; //!< expression text ("" if constant)
-    double value = 0.0;
-    bool isConstant() const { return text.empty(); }
+    Fluid,    //!< no shear stress
+    Viscous,  //!< tau1 from the viscosity
+    Elastic,  //!< tau1 = +inf
+    Constant, //!< tau1 as given
+    Plastic   //!< tau1 = tau10 (sigma_Y / sigma_bar)^n
+};
+
+enum class BoundaryKind
+{
+    Free,
+    SlipWall,
+    Symmetry,
+    Velocity,
+    Pressure,
+    Traction
+};
+
+enum class ThermalKind
+{
+    Adiabatic,
+    Isothermal
+};
+
+enum class ExactSolution
+{
+    None,
+    Sedov
 };
 
 struct MaterialSpec
 {
-    std::string eos = "ideal_gas"; //!< ideal_gas, mie_gruneisen, neo_hookean (gpr.md 1.3)
+    EosKind eos = EosKind::IdealGas; //!< gpr.md 1.3
     double gamma = 1.4;             //!< ideal gas
     double cv = 1.0;
     double rho0 = 1.0, c0 = 1.0, Gamma0 = 0.0, s = 0.0; //!< Mie-Grueneisen (rho0 also neo-Hookean)
@@ -43,7 +74,7 @@ struct MaterialSpec
     // GPR constitutive model (gpr.md 1.2, 1.4). rho0 above is also the reference density of G_e (at rest
     // G_e = (rho/rho0)^{2/3} I) and of the relaxation laws; for an ideal gas it defaults to 1.
     double shearSpeed = 0.0;          //!< c_sh >= 0 (key shear_sound_speed); 0 with law "fluid"
-    std::string strainLaw = "fluid";  //!< fluid (no shear stress), viscous, elastic, constant, plastic
+    RelaxationLaw strainLaw = RelaxationLaw::Fluid;
     double tau1 = 0.0;                //!< relaxation time: constant law as given; viscous 6 mu/(rho0 csh^2); elastic +inf
     double viscosity = 0.0;           //!< viscous law: mu
     double tau10 = 0.0, yieldStress = 0.0, exponent = 0.0; //!< plastic law tau1 = tau10 (sigma_Y / sigma_bar)^n
@@ -67,11 +98,11 @@ struct RegionSpec
 
 struct BoundarySpec
 {
-    std::string type; //!< free, slip_wall, symmetry, velocity, pressure, traction
+    BoundaryKind type = BoundaryKind::SlipWall;
     std::array<double, 3> velocity{0.0, 0.0, 0.0};
     Expr pressure; //!< imposed pressure (normal traction -p n): a constant or an expression of t
     std::array<double, 3> traction{0.0, 0.0, 0.0}; //!< imposed traction vector T n (type traction)
-    std::string thermal = "adiabatic"; //!< adiabatic (q . n = 0) or isothermal
+    ThermalKind thermal = ThermalKind::Adiabatic; //!< adiabatic: q . n = 0
     double temperature = 0.0;          //!< isothermal wall temperature (> 0)
 };
 
@@ -106,13 +137,13 @@ struct Scene
     double picardTolerance = 1e-10; //!< max_i |sigma^{l+1} - sigma^l|_F / (rho_i a_i^2) to stop the Picard loop
     int picardMaxIterations = 50;   //!< cap: the step is cut and retried when it is reached
     int order = 1;                  //!< 1: first order; 2: limited linear reconstruction + midpoint predictor-corrector
-    std::string limiter = "barth_jespersen"; //!< order 2: barth_jespersen | vertex_based | none
+    Limiter limiter = Limiter::BarthJespersen; //!< order 2 only
 
     std::string outputDirectory = "output";
     double outputInterval = 0.0; //!< 0: first and last state only
     bool writeOutput = true;
 
-    std::string exactSolution = "none"; //!< none, sedov
+    ExactSolution exactSolution = ExactSolution::None;
     std::string exactTable;             //!< resolved path of a radial profile (csv)
     double exactShockRadius = 0.0;      //!< at exactTime
     double exactTime = 1.0;             //!< time of the tabulated profile (self-similar scaling to other times)

@@ -1,0 +1,360 @@
+#include "config/Scene.hpp"
+
+#include <algorithm>
+#include <cmath>
+#include <filesystem>
+#include <fstream>
+#include <functional>
+#include <limits>
+#include <set>
+#include <sstream>
+
+#include <Teuchos_YamlParameterListHelpers.hpp>
+
+#include "physics/Expression.hpp"
+
+namespace unilag
+{
+namespace
+{
+
+namespace fs = std::filesystem;
+using config::ConfigNode;
+using config::num;
+using config::resolvePath;
+
+//! Strain relaxation laws (gpr.md 1.4) and the keys of strain_relaxation each one takes besides 'law'.
+struct LawKeys
+{
+    std::string name;
+    RelaxationLaw law;
+    std::vector<std::string> keys;
+};
+const std::vector<LawKeys> kStrainLaws = {{"fluid", RelaxationLaw::Fluid, {}},
+                                          {"viscous", RelaxationLaw::Viscous, {"viscosity"}},
+                                          {"elastic", RelaxationLaw::Elastic, {}},
+                                          {"constant", RelaxationLaw::Constant, {"tau1"}},
+                                          {"plastic", RelaxationLaw::Plastic, {"tau10", "yield_stress", "exponent"}}};
+
+/*! \brief strain_relaxation of a material (gpr.md 1.4): the law, its parameters and tau1.
+ *  Needs spec.rho0 and spec.shearSpeed. */
+void readStrainRelaxation(ConfigNode& m, MaterialSpec& spec)
+{
+    const bool given = m.has("strain_relaxation");
+    ConfigNode st = m.sub("strain_relaxation");
+    std::vector<std::pair<std::string, RelaxationLaw>> laws;
+    for (const auto& law : kStrainLaws)
+        laws.emplace_back(law.name, law.law);
+    spec.strainLaw = st.option("law", "fluid", laws, given);
+    const std::string lawName = st.text("law", "fluid");
+    // a parameter of another law is a mistake (e.g. viscosity with law plastic), not an unknown key
+    for (const auto& law : kStrainLaws)
+        for (const auto& k : law.keys)
+            if (law.law != spec.strainLaw && st.has(k))
+                st.fail(k, "belongs to law '" + law.name + "', not to law '" + lawName + "' (key '" +
+                               st.join("law") + "')");
+
+    if (spec.strainLaw == RelaxationLaw::Fluid)
+    {
+        if (spec.shearSpeed != 0.0)
+            m.fail("shear_sound_speed",
+                   "an ideal fluid (strain_relaxation law 'fluid', the default) has no shear stiffness, found " +
+                       num(spec.shearSpeed) +
+                       "; for the hydrodynamic limit of GPR give 'strain_relaxation: {law: constant, tau1: 1e-14}'");
+        spec.tau1 = 0.0;
+    }
+    else if (!(spec.shearSpeed > 0.0))
+        m.fail("shear_sound_speed", "strain relaxation law '" + lawName + "' needs a shear sound speed > 0, found " +
+                                        num(spec.shearSpeed));
+
+    if (spec.strainLaw == RelaxationLaw::Viscous)
+    {
+        spec.viscosity = st.positive("viscosity", 0.0, true);
+        spec.tau1 = 6.0 * spec.viscosity / (spec.rho0 * spec.shearSpeed * spec.shearSpeed); // gpr.md 1.4
+    }
+    else if (spec.strainLaw == RelaxationLaw::Elastic)
+        spec.tau1 = std::numeric_limits<double>::infinity();
+    else if (spec.strainLaw == RelaxationLaw::Constant)
+        spec.tau1 = st.positive("tau1", 0.0, true);
+    else if (spec.strainLaw == RelaxationLaw::Plastic)
+    {
+        spec.tau10 = st.positive("tau10", 0.0, true);
+        spec.yieldStress = st.positive("yield_stress", 0.0, true);
+        spec.exponent = st.positive("exponent", 0.0, true);
+    }
+    st.rejectUnknown();
+}
+
+//! heat_conduction of a material (gpr.md 1.2, 1.4): alpha, theta0 and one of kappa, tau2. Needs spec.rho0.
+void readHeatConduction(ConfigNode& m, MaterialSpec& spec)
+{
+    spec.heatConduction = m.has("heat_conduction");
+    ConfigNode h = m.sub("heat_conduction");
+    if (!spec.heatConduction)
+        return;
+    spec.alpha = h.positive("alpha", 0.0, true);
+    spec.theta0 = h.positive("reference_temperature", 0.0, true);
+    const bool kappa = h.has("kappa"), tau2 = h.has("tau2");
+    if (kappa == tau2)
+        h.fail("kappa", std::string(kappa ? "given together with 'tau2'" : "missing") +
+                            ": give exactly one of 'kappa' (Fourier conductivity) and 'tau2' (relaxation time)");
+    // kappa = tau2 alpha^2 theta0 / rho0 (gpr.md 1.2)
+    const double scale = spec.alpha * spec.alpha * spec.theta0 / spec.rho0;
+    if (kappa)
+    {
+        spec.kappa = h.positive("kappa", 0.0, true);
+        spec.tau2 = spec.kappa / scale;
+    }
+    else
+    {
+        spec.tau2 = h.positive("tau2", 0.0, true);
+        spec.kappa = spec.tau2 * scale;
+    }
+    if (!(spec.tau2 > 0.0) || !std::isfinite(spec.tau2) || !(spec.kappa > 0.0) || !std::isfinite(spec.kappa))
+        h.fail(kappa ? "kappa" : "tau2", "gives kappa = " + num(spec.kappa) + " and tau2 = " + num(spec.tau2) +
+                                             ", both must be positive and finite");
+    h.rejectUnknown();
+}
+
+//! One entry of 'materials'.
+MaterialSpec readMaterial(ConfigNode& m)
+{
+    MaterialSpec spec;
+    spec.eos = m.option<EosKind>("eos", "",
+                                 {{"ideal_gas", EosKind::IdealGas},
+                                  {"mie_gruneisen", EosKind::MieGruneisen},
+                                  {"neo_hookean", EosKind::NeoHookean}},
+                                 true);
+    spec.cv = m.positive("cv", 1.0);
+    if (spec.eos == EosKind::IdealGas)
+    {
+        spec.gamma = m.number("gamma", 1.4);
+        if (!(spec.gamma > 1.0) || !std::isfinite(spec.gamma))
+            m.fail("gamma", "an ideal gas needs gamma > 1, found " + num(spec.gamma));
+        spec.rho0 = m.positive("rho0", 1.0);
+    }
+    else if (spec.eos == EosKind::MieGruneisen)
+    {
+        spec.rho0 = m.positive("rho0", 0.0, true);
+        spec.c0 = m.positive("c0", 0.0, true);
+        spec.Gamma0 = m.positive("Gamma0", 0.0, true);
+        spec.s = m.nonNegative("s", 0.0);
+    }
+    else
+    {
+        spec.rho0 = m.positive("rho0", 0.0, true);
+        spec.csh = m.positive("csh", 0.0, true);
+    }
+    spec.shearSpeed = m.nonNegative("shear_sound_speed", 0.0);
+    readStrainRelaxation(m, spec);
+    readHeatConduction(m, spec);
+    m.rejectUnknown();
+    return spec;
+}
+
+} // namespace
+
+Scene readScene(const std::string& file, const std::vector<std::string>& overrides)
+{
+    const Teuchos::RCP<Teuchos::ParameterList> top = config::readYaml(file, "unilag", overrides);
+
+    Scene s;
+    s.file = file;
+    s.directory = fs::path(file).parent_path().string();
+    if (s.directory.empty())
+        s.directory = ".";
+    s.name = fs::path(file).stem().string();
+    ConfigNode root(file, "", *top);
+    s.name = root.text("title", s.name);
+
+    {
+        ConfigNode mesh = root.sub("mesh", true);
+        s.geometry = resolvePath(s.directory, mesh.text("geometry", ""));
+        s.meshFile = resolvePath(s.directory, mesh.text("file", ""));
+        if (s.geometry.empty() == s.meshFile.empty())
+            mesh.fail("geometry", "give exactly one of 'geometry' (a .geo to mesh) and 'file' (a .msh to read)");
+        if (!s.geometry.empty())
+        {
+            s.meshSize = mesh.positive("size", 0.0, true);
+            if (!fs::exists(s.geometry))
+                mesh.fail("geometry", "file not found: " + s.geometry);
+        }
+        else if (!fs::exists(s.meshFile))
+            mesh.fail("file", "file not found: " + s.meshFile);
+        mesh.rejectUnknown();
+    }
+    {
+        ConfigNode mats = root.sub("materials", true);
+        for (const auto& name : mats.keys())
+        {
+            ConfigNode m = mats.sub(name);
+            const MaterialSpec spec = readMaterial(m);
+            s.materials[name] = spec;
+        }
+        if (s.materials.empty())
+            root.fail("materials", "at least one material is required");
+    }
+    {
+        ConfigNode regions = root.sub("regions", true);
+        for (const auto& name : regions.keys())
+        {
+            ConfigNode r = regions.sub(name);
+            RegionSpec spec;
+            spec.material = r.text("material", "", true);
+            if (!s.materials.count(spec.material))
+                r.fail("material", "unknown material '" + spec.material + "' (not in 'materials')");
+            spec.density = r.expression("density", true);
+            if (spec.density.isConstant() && !(spec.density.value > 0.0))
+                r.fail("density", "must be positive, found " + num(spec.density.value));
+            const bool p = r.has("pressure"), e = r.has("specific_internal_energy");
+            if (p == e)
+                r.fail("pressure", "give exactly one of 'pressure' and 'specific_internal_energy'");
+            spec.hasPressure = p;
+            if (p)
+                spec.pressure = r.expression("pressure", true);
+            else
+                spec.internalEnergy = r.expression("specific_internal_energy", true);
+            const Expr& th = p ? spec.pressure : spec.internalEnergy;
+            if (th.isConstant() && !(th.value >= 0.0))
+                r.fail(p ? "pressure" : "specific_internal_energy", "must be non-negative");
+            if (r.has("velocity"))
+            {
+                auto v = r.expressions("velocity");
+                spec.velocityComponents = int(v.size());
+                for (std::size_t d = 0; d < v.size(); ++d)
+                    spec.velocity[d] = v[d];
+            }
+            r.rejectUnknown();
+            s.regions[name] = spec;
+        }
+        if (s.regions.empty())
+            root.fail("regions", "at least one region (a gmsh physical group of cells) is required");
+    }
+    {
+        ConfigNode bcs = root.sub("boundaries", true);
+        for (const auto& name : bcs.keys())
+        {
+            ConfigNode b = bcs.sub(name);
+            BoundarySpec spec;
+            spec.type = b.option<BoundaryKind>("type", "",
+                                               {{"free", BoundaryKind::Free},
+                                                {"slip_wall", BoundaryKind::SlipWall},
+                                                {"symmetry", BoundaryKind::Symmetry},
+                                                {"velocity", BoundaryKind::Velocity},
+                                                {"pressure", BoundaryKind::Pressure},
+                                                {"traction", BoundaryKind::Traction}},
+                                               true);
+            const std::string typeName = b.text("type", "");
+            // the value key of each type is its name; a value key of another type is a mistake
+            for (const char* other : {"velocity", "pressure", "traction"})
+                if (typeName != other && b.has(other))
+                    b.fail(other, std::string("only a boundary of type '") + other + "' takes '" + other +
+                                      "', this one is '" + typeName + "'");
+            if (spec.type == BoundaryKind::Velocity)
+            {
+                auto v = b.vector("velocity", true);
+                for (std::size_t d = 0; d < v.size(); ++d)
+                    spec.velocity[d] = v[d];
+            }
+            if (spec.type == BoundaryKind::Pressure)
+                spec.pressure = b.expression("pressure", true);
+            if (spec.type == BoundaryKind::Traction)
+            {
+                auto v = b.vector("traction", true);
+                if (v.size() < 2)
+                    b.fail("traction", "expected a traction vector of 2 or 3 numbers, found " + std::to_string(v.size()));
+                for (std::size_t d = 0; d < v.size(); ++d)
+                    if (!std::isfinite(v[d]))
+                        b.fail("traction", "must be finite");
+                for (std::size_t d = 0; d < v.size(); ++d)
+                    spec.traction[d] = v[d];
+            }
+            spec.thermal = b.option<ThermalKind>(
+                "thermal", "adiabatic", {{"adiabatic", ThermalKind::Adiabatic}, {"isothermal", ThermalKind::Isothermal}});
+            if (spec.thermal == ThermalKind::Isothermal)
+                spec.temperature = b.positive("temperature", 0.0, true);
+            else if (b.has("temperature"))
+                b.fail("temperature", "only an isothermal boundary takes a temperature (give 'thermal: isothermal')");
+            b.rejectUnknown();
+            s.boundaries[name] = spec;
+        }
+    }
+    if (root.has("energy_deposit"))
+    {
+        ConfigNode dep = root.sub("energy_deposit");
+        s.hasDeposit = true;
+        auto pos = dep.vector("position", true);
+        for (std::size_t d = 0; d < pos.size(); ++d)
+            s.depositPosition[d] = pos[d];
+        s.depositEnergy = dep.positive("energy", 0.0, true);
+        dep.rejectUnknown();
+    }
+    {
+        ConfigNode t = root.sub("time", true);
+        s.endTime = t.positive("end", 0.0, true);
+        s.cfl = t.positive("cfl", s.cfl);
+        if (s.cfl > 1.0)
+            t.fail("cfl", "must be in (0, 1], found " + num(s.cfl));
+        s.maxVolumeChange = t.positive("max_volume_change", s.maxVolumeChange);
+        s.initialTimeStep = t.nonNegative("initial_dt", 0.0);
+        s.maxGrowth = t.positive("max_growth", s.maxGrowth);
+        if (s.maxGrowth < 1.0)
+            t.fail("max_growth", "must be >= 1");
+        s.maxSteps = t.integer("max_steps", s.maxSteps, 1, 2000000000L);
+        s.maxRetries = int(t.integer("max_retries", s.maxRetries, 0, 60));
+        t.rejectUnknown();
+    }
+    {
+        ConfigNode sch = root.sub("scheme");
+        s.picardTolerance = sch.positive("picard_tolerance", s.picardTolerance);
+        s.picardMaxIterations = int(sch.integer("picard_max_iterations", s.picardMaxIterations, 1, 1000000));
+        s.order = int(sch.integer("order", s.order, 1, 2));
+        s.limiter = sch.option<Limiter>("limiter", "barth_jespersen",
+                                        {{"barth_jespersen", Limiter::BarthJespersen},
+                                         {"vertex_based", Limiter::VertexBased},
+                                         {"none", Limiter::None}});
+        sch.rejectUnknown();
+    }
+    {
+        ConfigNode o = root.sub("output");
+        s.outputDirectory = o.text("directory", "output/" + s.name);
+        if (s.outputDirectory.empty())
+            o.fail("directory", "must not be empty");
+        s.outputInterval = o.nonNegative("interval", 0.0);
+        s.writeOutput = o.boolean("enabled", true);
+        o.rejectUnknown();
+    }
+    if (root.has("exact"))
+    {
+        ConfigNode x = root.sub("exact");
+        s.exactSolution = x.option<ExactSolution>("solution", "none",
+                                                  {{"none", ExactSolution::None}, {"sedov", ExactSolution::Sedov}});
+        const bool sedov = s.exactSolution == ExactSolution::Sedov;
+        s.exactTable = resolvePath(s.directory, x.text("table", "", sedov));
+        if (sedov && !fs::exists(s.exactTable))
+            x.fail("table", "file not found: " + s.exactTable);
+        s.exactShockRadius = x.positive("shock_radius", 1.0, sedov);
+        s.exactTime = x.positive("time", 1.0);
+        if (x.has("boundary_radius"))
+        {
+            ConfigNode radii = x.sub("boundary_radius");
+            for (const auto& group : radii.keys())
+                s.boundaryRadius[group] = radii.positive(group, 0.0, true);
+            radii.rejectUnknown();
+        }
+        s.radiusTolerance = x.nonNegative("radius_tolerance", 0.0);
+        s.maxL1Density = x.nonNegative("max_l1_density", 0.0);
+        s.shockRadiusTolerance = x.nonNegative("shock_radius_tolerance", 0.0);
+        x.rejectUnknown();
+    }
+    root.rejectUnknown();
+    s.resolved = *top;
+    return s;
+}
+
+void writeScene(const Scene& scene, const std::string& file)
+{
+    Teuchos::writeParameterListToYamlFile(scene.resolved, file);
+}
+
+} // namespace unilag

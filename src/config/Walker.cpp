@@ -1,0 +1,427 @@
+#include "config/Walker.hpp"
+
+#include <cmath>
+#include <filesystem>
+#include <sstream>
+
+#include <Teuchos_YamlParameterListHelpers.hpp>
+
+#include "physics/Expression.hpp"
+
+namespace unilag::config
+{
+namespace
+{
+
+namespace fs = std::filesystem;
+
+std::size_t editDistance(const std::string& a, const std::string& b)
+{
+    std::vector<std::size_t> prev(b.size() + 1), cur(b.size() + 1);
+    for (std::size_t j = 0; j <= b.size(); ++j)
+        prev[j] = j;
+    for (std::size_t i = 1; i <= a.size(); ++i)
+    {
+        cur[0] = i;
+        for (std::size_t j = 1; j <= b.size(); ++j)
+            cur[j] = std::min({prev[j] + 1, cur[j - 1] + 1, prev[j - 1] + (a[i - 1] == b[j - 1] ? 0 : 1)});
+        std::swap(prev, cur);
+    }
+    return prev[b.size()];
+}
+
+
+bool parseNumber(const std::string& s, double& out)
+{
+    char* end = nullptr;
+    out = std::strtod(s.c_str(), &end);
+    return !s.empty() && end && *end == '\0';
+}
+
+
+std::string entryText(const Teuchos::ParameterEntry& e)
+{
+    std::ostringstream os;
+    os << "'" << e.getAny(false) << "'";
+    return os.str();
+}
+
+const Teuchos::ParameterList& emptyList()
+{
+    static const Teuchos::ParameterList empty;
+    return empty;
+}
+
+//! Apply one "a.b.c=value" override; the value's type follows the entry it replaces, else is inferred.
+void applyOverride(Teuchos::ParameterList& root, const std::string& file, const std::string& assignment)
+{
+    const auto eq = assignment.find('=');
+    if (eq == std::string::npos || eq == 0)
+        throw InputError(file + ": --set '" + assignment + "': expected key.path=value");
+    const std::string path = assignment.substr(0, eq), value = assignment.substr(eq + 1);
+    Teuchos::ParameterList* list = &root;
+    std::size_t start = 0, dot;
+    while ((dot = path.find('.', start)) != std::string::npos)
+    {
+        const std::string part = path.substr(start, dot - start);
+        if (list->isParameter(part) && !list->isSublist(part))
+            throw InputError(file + ": --set '" + path + "': '" + part + "' is a value, not a section");
+        list = &list->sublist(part);
+        start = dot + 1;
+    }
+    const std::string key = path.substr(start);
+    double d;
+    if (list->isType<std::string>(key) || (!parseNumber(value, d) && value != "true" && value != "false" &&
+                                             (value.empty() || value.front() != '[')))
+        list->set(key, value);
+    else if (value == "true" || value == "false")
+        list->set(key, value == "true");
+    else if (!value.empty() && value.front() == '[')
+    {
+        Teuchos::Array<double> arr;
+        std::string body = value.substr(1, value.find(']') == std::string::npos ? std::string::npos : value.find(']') - 1);
+        std::stringstream ss(body);
+        std::string item;
+        while (std::getline(ss, item, ','))
+        {
+            item.erase(0, item.find_first_not_of(' '));
+            item.erase(item.find_last_not_of(' ') + 1);
+            if (!parseNumber(item, d))
+                throw InputError(file + ": --set '" + path + "': '" + item + "' is not a number");
+            arr.push_back(d);
+        }
+        list->set(key, arr);
+    }
+    else if (list->isType<int>(key) || (!list->isParameter(key) && value.find_first_of(".eE") == std::string::npos))
+        list->set(key, int(std::lround(d)));
+    else
+        list->set(key, d);
+}
+
+
+} // namespace
+
+std::string num(double v)
+{
+    std::ostringstream os;
+    os << v;
+    return os.str();
+}
+
+
+std::string resolvePath(const std::string& dir, const std::string& p)
+{
+    if (p.empty())
+        return p;
+    const fs::path path(p);
+    return (path.is_absolute() ? path : fs::path(dir) / path).lexically_normal().string();
+}
+
+
+Teuchos::RCP<Teuchos::ParameterList> readYaml(const std::string& file, const std::string& top,
+                                              const std::vector<std::string>& overrides)
+{
+    if (!fs::exists(file))
+        throw InputError(file + ": scene file not found");
+    Teuchos::RCP<Teuchos::ParameterList> list;
+    try
+    {
+        list = Teuchos::getParametersFromYamlFile(file);
+    }
+    catch (const std::exception& e)
+    {
+        std::string msg = e.what();
+        // keep the parser's first line: it names the line and column
+        const auto nl = msg.find('\n', msg.find_first_not_of('\n'));
+        throw InputError(file + ": malformed YAML: " + msg.substr(0, nl));
+    }
+    if (list->name() != top)
+        throw InputError(file + ": the top-level key must be '" + top + ":', found '" + list->name() + "'");
+    for (const auto& o : overrides)
+        applyOverride(*list, file, o);
+    return list;
+}
+
+ConfigNode::ConfigNode(const std::string& file, const std::string& path, const Teuchos::ParameterList& list)
+    : file_(file), path_(path), list_(list)
+{
+}
+
+void ConfigNode::fail(const std::string& key, const std::string& what) const
+{
+    throw InputError(file_ + ": key '" + join(key) + "': " + what);
+}
+//! A required key is absent: the error also names a key present but not read that looks like a misspelling.
+void ConfigNode::missing(const std::string& key, const std::string& what) const
+{
+    std::string best;
+    std::size_t bestD = 3;
+    for (auto it = list_.begin(); it != list_.end(); ++it)
+    {
+        const std::string& k = list_.name(it);
+        const std::size_t d = editDistance(k, key);
+        if (!used_.count(k) && d < bestD)
+        {
+            bestD = d;
+            best = k;
+        }
+    }
+    const std::string hint = best.empty() ? "" : "; found '" + join(best) + "': did you mean '" + join(key) + "'?";
+    fail(key, "missing " + what + hint);
+}
+
+
+ConfigNode ConfigNode::sub(const std::string& key, bool required)
+{
+    used_.insert(key);
+    if (!list_.isParameter(key))
+    {
+        if (required)
+            missing(key, "(a section is required here)");
+        return ConfigNode(file_, join(key), emptyList());
+    }
+    if (!list_.isSublist(key))
+        fail(key, "expected a section of keys, found a value");
+    return ConfigNode(file_, join(key), list_.sublist(key));
+}
+
+//! Names of all entries (for sections keyed by user names: materials, regions, boundaries).
+std::vector<std::string> ConfigNode::keys() const
+{
+    std::vector<std::string> k;
+    for (auto it = list_.begin(); it != list_.end(); ++it)
+        k.push_back(list_.name(it));
+    return k;
+}
+
+double ConfigNode::number(const std::string& key, double def, bool required)
+{
+    used_.insert(key);
+    if (!list_.isParameter(key))
+    {
+        if (required)
+            missing(key, "(a number is required)");
+        return def;
+    }
+    const auto& e = list_.getEntry(key);
+    if (e.isType<double>())
+        return e.getValue<double>(nullptr);
+    if (e.isType<int>())
+        return e.getValue<int>(nullptr);
+    if (e.isType<long long>())
+        return double(e.getValue<long long>(nullptr));
+    double v;
+    if (e.isType<std::string>() && parseNumber(e.getValue<std::string>(nullptr), v))
+        return v;
+    fail(key, "expected a number, found '" + e.getAny(false).typeName() + "' " + entryText(e));
+}
+
+double ConfigNode::positive(const std::string& key, double def, bool required)
+{
+    const double v = number(key, def, required);
+    if (!(v > 0.0) || !std::isfinite(v))
+        fail(key, "must be a positive number, found " + num(v));
+    return v;
+}
+
+double ConfigNode::nonNegative(const std::string& key, double def)
+{
+    const double v = number(key, def);
+    if (!(v >= 0.0) || !std::isfinite(v))
+        fail(key, "must be a non-negative number, found " + num(v));
+    return v;
+}
+
+long ConfigNode::integer(const std::string& key, long def, long lo, long hi)
+{
+    used_.insert(key);
+    if (!list_.isParameter(key))
+        return def;
+    const auto& e = list_.getEntry(key);
+    long v;
+    if (e.isType<int>())
+        v = e.getValue<int>(nullptr);
+    else if (e.isType<long long>())
+        v = long(e.getValue<long long>(nullptr));
+    else
+        fail(key, "expected an integer, found " + entryText(e));
+    if (v < lo || v > hi)
+        fail(key, "must be in [" + std::to_string(lo) + ", " + std::to_string(hi) + "], found " + std::to_string(v));
+    return v;
+}
+
+bool ConfigNode::boolean(const std::string& key, bool def)
+{
+    used_.insert(key);
+    if (!list_.isParameter(key))
+        return def;
+    const auto& e = list_.getEntry(key);
+    if (e.isType<bool>())
+        return e.getValue<bool>(nullptr);
+    fail(key, "expected true or false, found " + entryText(e));
+}
+
+std::string ConfigNode::text(const std::string& key, const std::string& def, bool required)
+{
+    used_.insert(key);
+    if (!list_.isParameter(key))
+    {
+        if (required)
+            missing(key, "(a string is required)");
+        return def;
+    }
+    const auto& e = list_.getEntry(key);
+    if (!e.isType<std::string>())
+        fail(key, "expected a string, found " + entryText(e));
+    return e.getValue<std::string>(nullptr);
+}
+
+std::string ConfigNode::choice(const std::string& key, const std::string& def, const std::vector<std::string>& allowed,
+                               bool required)
+{
+    const std::string v = text(key, def, required);
+    if (std::find(allowed.begin(), allowed.end(), v) == allowed.end())
+    {
+        std::string list;
+        for (const auto& a : allowed)
+            list += (list.empty() ? "" : ", ") + a;
+        std::string best;
+        std::size_t bestD = std::max<std::size_t>(3, v.size() / 3 + 1);
+        for (const auto& a : allowed)
+        {
+            const std::size_t d = editDistance(v, a);
+            if (d < bestD)
+            {
+                bestD = d;
+                best = a;
+            }
+        }
+        fail(key, "'" + v + "' is not one of: " + list + (best.empty() ? "" : " (did you mean '" + best + "'?)"));
+    }
+    return v;
+}
+
+//! A list of 1 to 3 numbers.
+std::vector<double> ConfigNode::vector(const std::string& key, bool required)
+{
+    used_.insert(key);
+    if (!list_.isParameter(key))
+    {
+        if (required)
+            missing(key, "(a list like [0.0, 0.0] is required)");
+        return {};
+    }
+    const auto& e = list_.getEntry(key);
+    std::vector<double> v;
+    if (e.isType<Teuchos::Array<double>>())
+        for (double d : e.getValue<Teuchos::Array<double>>(nullptr))
+            v.push_back(d);
+    else if (e.isType<Teuchos::Array<int>>())
+        for (int d : e.getValue<Teuchos::Array<int>>(nullptr))
+            v.push_back(d);
+    else if (e.isType<Teuchos::Array<std::string>>())
+        for (const auto& s : e.getValue<Teuchos::Array<std::string>>(nullptr))
+        {
+            double d;
+            if (!parseNumber(s, d))
+                fail(key, "'" + s + "' is not a number");
+            v.push_back(d);
+        }
+    else
+        fail(key, "expected a list of numbers like [0.0, 0.0], found " + entryText(e));
+    if (v.empty() || v.size() > 3)
+        fail(key, "expected 1 to 3 numbers, found " + std::to_string(v.size()));
+    return v;
+}
+
+//! A list of 1 to 3 constants or expressions of x, y, z, r.
+std::vector<Expr> ConfigNode::expressions(const std::string& key)
+{
+    std::vector<Expr> out;
+    const auto& e = list_.getEntry(key);
+    if (!e.isType<Teuchos::Array<std::string>>())
+    {
+        for (double d : vector(key))
+            out.push_back(Expr{"", d});
+        return out;
+    }
+    used_.insert(key);
+    for (const auto& item : e.getValue<Teuchos::Array<std::string>>(nullptr))
+    {
+        Expr x;
+        if (!parseNumber(item, x.value))
+        {
+            x.text = item;
+            try
+            {
+                Expression compiled(item);
+                x.value = compiled(0.0, 0.0, 0.0);
+            }
+            catch (const std::exception& err)
+            {
+                fail(key, err.what());
+            }
+        }
+        out.push_back(x);
+    }
+    if (out.empty() || out.size() > 3)
+        fail(key, "expected 1 to 3 components, found " + std::to_string(out.size()));
+    return out;
+}
+
+//! A constant or an expression of x, y, z, r (checked by compiling it).
+Expr ConfigNode::expression(const std::string& key, bool required)
+{
+    used_.insert(key);
+    if (!list_.isParameter(key))
+    {
+        if (required)
+            missing(key, "(a number or an expression of x, y, z, r is required)");
+        return {};
+    }
+    const auto& e = list_.getEntry(key);
+    Expr x;
+    if (e.isType<std::string>())
+    {
+        x.text = e.getValue<std::string>(nullptr);
+        try
+        {
+            Expression compiled(x.text);
+            x.value = compiled(0.0, 0.0, 0.0);
+        }
+        catch (const std::exception& err)
+        {
+            fail(key, err.what());
+        }
+        return x;
+    }
+    x.value = number(key, 0.0);
+    if (!std::isfinite(x.value))
+        fail(key, "must be finite");
+    return x;
+}
+
+//! Every key not read is an error, with the closest known key as a hint.
+void ConfigNode::rejectUnknown() const
+{
+    for (auto it = list_.begin(); it != list_.end(); ++it)
+    {
+        const std::string& k = list_.name(it);
+        if (used_.count(k))
+            continue;
+        std::string best;
+        std::size_t bestD = 4;
+        for (const auto& u : used_)
+        {
+            const std::size_t d = editDistance(k, u);
+            if (d < bestD)
+            {
+                bestD = d;
+                best = u;
+            }
+        }
+        fail(k, "unknown key" + (best.empty() ? std::string() : " (did you mean '" + join(best) + "'?)"));
+    }
+}
+
+} // namespace unilag::config

@@ -1,0 +1,84 @@
+/*! \file GprCorrector.hpp
+ *  \brief Second order (2.5), member functions of GprOperator: the midpoint state of a predictor-corrector step
+ *  with its limited reconstruction and nodal solve, and the update of the state at t^n over dt with the midpoint
+ *  fluxes. Included by GprOperator.hpp.
+ */
+#pragma once
+
+namespace unilag
+{
+
+/*! The predictor has left Q^{n+1/2} in state_new (owned cells), x^{n+1/2} in x_new (all local nodes) and the geometry
+ *  of the owned cells in geomNew. These become the midpoint state: its ghosts are completed, its gradients
+ *  reconstructed (limited, exchanged), and the nodes solved with the reconstructed values at t^n + dt/2 (boundary
+ *  pressures at that time). Heat variants: the midpoint Rusanov fluxes. Collective. */
+template <int D, class P>
+void GprOperator<D, P>::midpointState(double t, double dt)
+{
+    auto& md = md_;
+    md.fields.swap("state_mid", "state_new");
+    md.fields.swap("x_mid", "x_new");
+    std::swap(md.geomMid, md.geomNew);
+    halo("state_mid");
+    auto xm = md.read("x_mid");
+    auto sm = md.read("state_mid");
+    {
+        ScopedTimer timer(md.timers, Phase::Geometry);
+        computeGeometry<D>(md.m, xm, md.geomMid, md.m.nCells, md.m.nOwnedCells);
+    }
+    {
+        ScopedTimer timer(md.timers, Phase::Eos);
+        computeEos<D, P>(sm, md.cellMaterial, md.materials, md.auxMid, md.m.nCells, md.sigmaMid);
+    }
+    setBoundaryTime(t + 0.5 * dt);
+    {
+        ScopedTimer timer(md.timers, Phase::Reconstruction);
+        limitedGradients<D, P>(md.m, sm, md.auxMid, md.sigmaMid, md.geomMid, xm, md.write("gradients"), md.bc,
+                               md.limiter);
+    }
+    halo("gradients");
+    rec_ = Reconstruction<D>{md.read("gradients"), xm, md.geomMid.centroid};
+    if constexpr (P::heat)
+    {
+        ScopedTimer timer(md.timers, Phase::HeatFluxes);
+        unilag::heatFluxes<D, P>(md.m, md.bc, sm, md.auxMid, md.geomMid, md.cellMaterial, md.materials,
+                                 md.heatRateMid);
+    }
+    {
+        ScopedTimer timer(md.timers, Phase::NodalSolve);
+        nodalSolve<D, P>(md.m, md.bc, sm, md.auxMid, md.geomMid, md.write("v_node"), md.fnode, md.sigmaMid, rec_);
+    }
+    halo("v_node");
+}
+
+/*! The corrector's update of Q^n over dt with the midpoint fluxes: x^{n+1} = x^n + dt v_r, G_e from G^n with the
+ *  midpoint transport and an implicit relaxation over dt, v, E, omega (and J) from the midpoint forces and heat
+ *  fluxes. The result is in state_new, x_new, geomNew as after a first-order step. Collective; false (with a message
+ *  in failure) if the G_e update finds an inadmissible cell; check tells whether the update is admissible. */
+template <int D, class P>
+bool GprOperator<D, P>::correctorUpdate(double dt, UpdateCheck& check, std::string& failure)
+{
+    auto& md = md_;
+    auto x = md.read("x");
+    auto v = md.read("v_node");
+    auto sm = md.read("state_mid");
+    if constexpr (P::strain)
+    {
+        const PicardCheck pc = strainStep(dt, true); // moves the nodes to x_new too
+        if (mpi::allMax(md.comm, pc.badCell >= 0 ? 1.0 : 0.0) > 0.0)
+        {
+            failure = inadmissible(pc.badCell, "in the corrector", dt);
+            return false;
+        }
+    }
+    else
+        moveNodes(x, v, dt, md.write("x_new"), md.m.nNodes, D);
+    ScopedTimer timer(md.timers, Phase::CellUpdate);
+    check = reduceCheck(unilag::updateCells<D, P>(md.m, md.read("state"), md.aux, md.geom, md.mass(), md.cellMaterial,
+                                                  md.materials, x, md.read("x_new"), v, dt, md.write("state_new"),
+                                                  ConstField(), md.heatRateMid, md.geomNew,
+                                                  CellFlux<D>{sm, md.auxMid, md.sigmaMid, md.geomMid, rec_}));
+    return true;
+}
+
+} // namespace unilag

@@ -1,0 +1,220 @@
+/*! \file GprDiagnostics.hpp
+ *  \brief What a run reports about its state: conserved totals, the diagnosis of a rejected step or a collapsed
+ *  time step, boundary radii (shells), and errors against a radial exact solution (Sedov).
+ */
+#pragma once
+
+#include <sstream>
+#include <tuple>
+#include <vector>
+
+#include "physics/Exact.hpp"
+#include "solver/GprModel.hpp"
+
+namespace unilag
+{
+
+//! Mass (sum of |T_i| / omega_i: tests the GCL), momentum, total energy, and sum m|v| over owned cells.
+template <int D, class P>
+void totals(const GprModel<D, P>& md, double (&out)[D + 3])
+{
+    using S = StateLayout<D, P>;
+    auto s = md.fields["state"].getLocalViewDevice(Tpetra::Access::ReadOnly);
+    auto volume = md.geom.volume;
+    auto mass = md.mass();
+    auto sum = KOKKOS_LAMBDA(const LO i, double (&acc)[D + 3])
+    {
+        acc[0] += volume(i) / s(i, S::omega);
+        double v2 = 0.0;
+        for (int d = 0; d < D; ++d)
+        {
+            acc[1 + d] += mass(i) * s(i, S::vel + d);
+            v2 += s(i, S::vel + d) * s(i, S::vel + d);
+        }
+        acc[1 + D] += mass(i) * s(i, S::energy);
+        acc[2 + D] += mass(i) * Kokkos::Experimental::sqrt(v2);
+    };
+    sumReduce<D + 3>("unilag::diagnostics::totals", md.m.nOwnedCells, sum, out);
+    mpi::allSum(md.comm, out);
+}
+
+//! The diagnosis of a rejected update: the worst cell, where it started, and its state. Collective.
+template <int D, class P>
+std::string diagnose(const GprModel<D, P>& md, const UpdateCheck& check, double t, double dt, int attempts)
+{
+    using S = StateLayout<D, P>;
+    std::string local;
+    if (check.worstCell >= 0)
+    {
+        const auto& dm = *md.mesh;
+        const LO i = check.worstCell;
+        auto sn = md.fields["state_new"].getLocalViewHost(Tpetra::Access::ReadOnly);
+        auto vol = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), md.geom.volume);
+        std::ostringstream os;
+        double c[3];
+        initialCentroid<D>(dm, i, c);
+        double kin = 0.0;
+        for (int d = 0; d < D; ++d)
+            kin += 0.5 * sn(i, S::vel + d) * sn(i, S::vel + d);
+        os << "cell " << dm.cellGid[i] << " (initial centroid " << c[0] << ", " << c[1] << ", " << c[2]
+           << ") at t = " << t << " after " << attempts << " halvings of dt (last dt " << dt
+           << "): volume ratio " << check.minVolumeRatio << ", specific internal energy "
+           << sn(i, S::energy) - kin << ", density " << 1.0 / sn(i, S::omega) << ", volume " << vol(i);
+        local = os.str();
+    }
+    return mpi::firstMessage(md.comm, local);
+}
+
+//! The time step has collapsed: report the smallest cell (the mesh is tangling there).
+template <int D, class P>
+std::string collapse(const GprModel<D, P>& md, double t, double dt, long step)
+{
+    const auto& dm = *md.mesh;
+    auto vol = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), md.geom.volume);
+    double smallest = 1e300;
+    LO cell = -1;
+    for (LO i = 0; i < dm.nOwnedCells; ++i)
+        if (vol(i) < smallest)
+        {
+            smallest = vol(i);
+            cell = i;
+        }
+    const int owner = mpi::argMinRank(md.comm, smallest);
+    std::string local;
+    if (md.rank == owner && cell >= 0)
+    {
+        std::ostringstream os;
+        os << "the time step collapsed to " << dt << " at t = " << t << " (step " << step
+           << "); the smallest cell is " << dm.cellGid[cell] << " with volume " << vol(cell)
+           << ": the mesh is tangling there";
+        local = os.str();
+    }
+    return mpi::firstMessage(md.comm, local);
+}
+
+template <int D, class P>
+std::tuple<std::vector<double>, std::vector<double>, std::vector<double>> cellRadii(const GprModel<D, P>& md)
+{
+    using S = StateLayout<D, P>;
+    const auto& dm = *md.mesh;
+    auto xh = md.fields["x"].getLocalViewHost(Tpetra::Access::ReadOnly);
+    auto sh = md.fields["state"].getLocalViewHost(Tpetra::Access::ReadOnly);
+    auto vol = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), md.geom.volume);
+    std::vector<double> r(dm.nOwnedCells), rho(dm.nOwnedCells), v(dm.nOwnedCells);
+    for (LO i = 0; i < dm.nOwnedCells; ++i)
+    {
+        double c[3] = {0, 0, 0};
+        for (int k = 0; k < D + 1; ++k)
+            for (int d = 0; d < D; ++d)
+                c[d] += xh(dm.cellNodesHost[(D + 1) * i + k], d) / (D + 1);
+        r[i] = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+        rho[i] = 1.0 / sh(i, S::omega);
+        v[i] = vol(i);
+    }
+    return {r, rho, v};
+}
+
+//! Mean distance from the origin of the nodes of each boundary group (shell radii: Kidder, beryllium shell).
+template <int D, class P>
+std::vector<double> boundaryRadii(const GprModel<D, P>& md)
+{
+    const auto& dm = *md.mesh;
+    const int ng = int(dm.boundaryNames.size()), nv = D + 1;
+    std::vector<std::vector<char>> on(ng, std::vector<char>(dm.nOwnedNodes, 0));
+    for (LO i = 0; i < dm.nCells; ++i)
+        for (int j = 0; j < nv; ++j)
+        {
+            const int g = dm.cellFaceGroupHost[nv * i + j];
+            if (g < 0)
+                continue;
+            for (int k = 0; k < nv; ++k)
+            {
+                const LO r = dm.cellNodesHost[nv * i + k];
+                if (k != j && r < dm.nOwnedNodes)
+                    on[g][r] = 1;
+            }
+        }
+    auto xh = md.fields["x"].getLocalViewHost(Tpetra::Access::ReadOnly);
+    std::vector<double> acc(2 * std::size_t(ng), 0.0);
+    for (int g = 0; g < ng; ++g)
+        for (LO r = 0; r < dm.nOwnedNodes; ++r)
+            if (on[g][r])
+            {
+                double r2 = 0.0;
+                for (int d = 0; d < D; ++d)
+                    r2 += xh(r, d) * xh(r, d);
+                acc[2 * g] += std::sqrt(r2);
+                acc[2 * g + 1] += 1.0;
+            }
+    MPI_Allreduce(MPI_IN_PLACE, acc.data(), 2 * ng, MPI_DOUBLE, MPI_SUM, md.comm);
+    std::vector<double> radii(ng);
+    for (int g = 0; g < ng; ++g)
+        radii[g] = acc[2 * g + 1] > 0 ? acc[2 * g] / acc[2 * g + 1] : 0.0;
+    return radii;
+}
+
+//! Volume-weighted mean |rho - rho_exact(|centroid|)| over the domain.
+template <int D, class P>
+double radialL1Density(const GprModel<D, P>& md, const RadialProfile& exact, double radiusScale)
+{
+    auto [r, rho, vol] = cellRadii(md);
+    double acc[2] = {0.0, 0.0};
+    for (std::size_t i = 0; i < r.size(); ++i)
+    {
+        acc[0] += vol[i] * std::abs(rho[i] - exact.density(radiusScale * r[i]));
+        acc[1] += vol[i];
+    }
+    mpi::allSum(md.comm, acc);
+    return acc[0] / acc[1];
+}
+
+//! Radius where the shell-averaged density falls to half-way between its peak and the ambient value.
+template <int D, class P>
+double shockRadius(const GprModel<D, P>& md, const RadialProfile& exact)
+{
+    auto [r, rho, vol] = cellRadii(md);
+    double hsum[2] = {0.0, double(r.size())};
+    {
+        auto len = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), md.geom.length);
+        for (LO i = 0; i < md.m.nOwnedCells; ++i)
+            hsum[0] += len(i);
+    }
+    mpi::allSum(md.comm, hsum);
+    const double width = 2.0 * hsum[0] / hsum[1];
+    double rmax = 0.0;
+    for (double x : r)
+        rmax = std::max(rmax, x);
+    rmax = -mpi::allMin(md.comm, -rmax);
+    const int nb = int(rmax / width) + 1;
+    std::vector<double> bins(2 * nb, 0.0);
+    for (std::size_t i = 0; i < r.size(); ++i)
+    {
+        const int b = std::min(nb - 1, int(r[i] / width));
+        bins[2 * b] += vol[i] * rho[i];
+        bins[2 * b + 1] += vol[i];
+    }
+    MPI_Allreduce(MPI_IN_PLACE, bins.data(), 2 * nb, MPI_DOUBLE, MPI_SUM, md.comm);
+    std::vector<double> mean(nb, -1.0);
+    int peak = 0;
+    for (int b = 0; b < nb; ++b)
+        if (bins[2 * b + 1] > 0.0)
+        {
+            mean[b] = bins[2 * b] / bins[2 * b + 1];
+            if (mean[b] > mean[peak])
+                peak = b;
+        }
+    const double ambient = exact.ambientDensity();
+    const double level = ambient + 0.5 * (mean[peak] - ambient);
+    for (int b = peak + 1; b < nb; ++b)
+        if (mean[b] >= 0.0 && mean[b] < level)
+        {
+            int a = b - 1;
+            while (a > peak && mean[a] < 0.0)
+                --a;
+            const double ra = (a + 0.5) * width, rb = (b + 0.5) * width;
+            return ra + (rb - ra) * (mean[a] - level) / (mean[a] - mean[b]);
+        }
+    return (peak + 0.5) * width;
+}
+
+} // namespace unilag

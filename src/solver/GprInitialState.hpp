@@ -1,0 +1,164 @@
+/*! \file GprInitialState.hpp
+ *  \brief The state at t = 0: positions, geometry, the regions' density, pressure (or internal energy) and velocity
+ *  at each cell's centroid, G_e at rest, J = 0, masses, materials and a point energy deposit. Included by
+ *  GprSetup.hpp.
+ */
+#pragma once
+
+namespace unilag
+{
+
+//! A region's initial data: constants or compiled expressions of x, y, z, r.
+struct RegionFunctions
+{
+    explicit RegionFunctions(const RegionSpec& spec) : spec(spec)
+    {
+        rho = compile(spec.density);
+        thermo = compile(spec.hasPressure ? spec.pressure : spec.internalEnergy);
+        for (int d = 0; d < spec.velocityComponents; ++d)
+            velocity[d] = compile(spec.velocity[d]);
+    }
+    static std::unique_ptr<Expression> compile(const Expr& e)
+    {
+        return e.isConstant() ? nullptr : std::make_unique<Expression>(e.text);
+    }
+    static double eval(const Expr& e, const std::unique_ptr<Expression>& x, const double (&c)[3])
+    {
+        return x ? (*x)(c[0], c[1], c[2]) : e.value;
+    }
+    const RegionSpec& spec;
+    std::unique_ptr<Expression> rho, thermo, velocity[3];
+};
+
+/*! Writes the initial state of the cells of region r into the state, mass and material rows (host views).
+ *  Returns an error naming the key and the cell, "" if fine. */
+template <int D, class P, class MatV, class SV, class MH, class VH>
+std::string regionState(const GprModel<D, P>& md, std::size_t r, const MatV& mats,
+                        const SV& sh, const MH& massH, const MH& matH, const VH& vol)
+{
+    using S = StateLayout<D, P>;
+    const auto& dm = *md.mesh;
+    const RegionSpec& spec = md.scene.regions.at(dm.regionNames[r]);
+    const std::string key = "regions." + dm.regionNames[r] + ".";
+    if (spec.velocityComponents != 0 && spec.velocityComponents != D)
+        return md.scene.file + ": key '" + key + "velocity': the mesh is " + std::to_string(D) +
+               "D, the velocity has " + std::to_string(spec.velocityComponents) + " components";
+    const RegionFunctions f(spec);
+    const int mat = int(std::distance(md.scene.materials.begin(), md.scene.materials.find(spec.material)));
+    for (LO i = 0; i < dm.nCells; ++i)
+    {
+        if (dm.cellRegion[i] != int(r))
+            continue;
+        double c[3];
+        initialCentroid<D>(dm, i, c);
+        const double rho = f.eval(spec.density, f.rho, c);
+        const double th = f.eval(spec.hasPressure ? spec.pressure : spec.internalEnergy, f.thermo, c);
+        const char* thKey = spec.hasPressure ? "pressure" : "specific_internal_energy";
+        if (!(rho > 0.0) || !std::isfinite(rho))
+            return md.scene.file + ": key '" + key + "density': value " + std::to_string(rho) + " at cell " +
+                   std::to_string(dm.cellGid[i]) + " is not positive";
+        if (!(th >= 0.0) || !std::isfinite(th))
+            return md.scene.file + ": key '" + key + thKey + "': value " + std::to_string(th) + " at cell " +
+                   std::to_string(dm.cellGid[i]) + " is negative";
+        double kin = 0.0;
+        for (int d = 0; d < D; ++d)
+        {
+            const double v = d < spec.velocityComponents ? f.eval(spec.velocity[d], f.velocity[d], c) : 0.0;
+            sh(i, S::vel + d) = v;
+            kin += 0.5 * v * v;
+        }
+        const double eps = spec.hasPressure ? gpr::internalEnergy(mats(mat).eos, rho, th) : th;
+        sh(i, S::omega) = 1.0 / rho;
+        sh(i, S::energy) = eps + kin;
+        if constexpr (P::strain)
+        {
+            // at rest: G_e = (rho / rho0)^{2/3} I, so det G_e = (rho / rho0)^2 (gpr.md 1.1) and sigma = 0
+            const double g = std::cbrt((rho / mats(mat).rho0) * (rho / mats(mat).rho0));
+            for (int k = 0; k < 6; ++k)
+                sh(i, S::G + k) = k < 3 ? g : 0.0;
+        }
+        if constexpr (P::heat)
+            for (int d = 0; d < D; ++d)
+                sh(i, S::J + d) = 0.0;
+        massH(i, 0) = rho * vol(i);
+        matH(i, 0) = mat;
+    }
+    return {};
+}
+
+//! Point energy deposit: into the cells around the node nearest to the point, as a uniform specific energy.
+template <int D, class P, class SV, class MH>
+void depositEnergy(const GprModel<D, P>& md, const SV& sh, const MH& massH)
+{
+    using S = StateLayout<D, P>;
+    const auto& dm = *md.mesh;
+    double best = 1e300;
+    GO bestNode = -1;
+    for (LO n = 0; n < dm.nOwnedNodes; ++n)
+    {
+        double d2 = 0;
+        for (int d = 0; d < D; ++d)
+            d2 += std::pow(dm.coords0[3 * n + d] - md.scene.depositPosition[d], 2);
+        if (d2 < best || (d2 == best && dm.nodeGid[n] < bestNode))
+        {
+            best = d2;
+            bestNode = dm.nodeGid[n];
+        }
+    }
+    long long node = bestNode;
+    MPI_Bcast(&node, 1, MPI_LONG_LONG, mpi::argMinRank(md.comm, best), md.comm);
+    auto touches = [&](LO i) {
+        for (int k = 0; k < D + 1; ++k)
+            if (dm.nodeGid[dm.cellNodesHost[(D + 1) * i + k]] == node)
+                return true;
+        return false;
+    };
+    double m[1] = {0.0};
+    for (LO i = 0; i < dm.nOwnedCells; ++i)
+        if (touches(i))
+            m[0] += massH(i, 0);
+    mpi::allSum(md.comm, m);
+    for (LO i = 0; i < dm.nCells; ++i)
+        if (touches(i))
+            sh(i, S::energy) += md.scene.depositEnergy / m[0];
+}
+
+//! Initial conditions, masses, materials and boundary table. Returns an error message ("" if fine). Collective.
+template <int D, class P>
+std::string initialize(GprModel<D, P>& md)
+{
+    const auto& dm = *md.mesh;
+    std::string error = setupBoundaries(md);
+    if (error.empty())
+        error = setupMaterials(md);
+    if (!error.empty())
+        return error;
+    {
+        auto xh = md.fields["x"].getLocalViewHost(Tpetra::Access::OverwriteAll);
+        for (LO n = 0; n < dm.nNodes; ++n)
+            for (int d = 0; d < D; ++d)
+                xh(n, d) = dm.coords0[3 * n + d];
+    }
+    if (!(computeGeometry<D>(md.m, md.read("x"), md.geom, dm.nCells) > 0.0))
+        return "internal: a cell of the distributed mesh has non-positive volume";
+
+    auto vol = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), md.geom.volume);
+    auto mats = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), md.materials);
+    auto massH = md.fields["mass"].getLocalViewHost(Tpetra::Access::OverwriteAll);
+    auto matH = md.fields["material"].getLocalViewHost(Tpetra::Access::OverwriteAll);
+    auto sh = md.fields["state"].getLocalViewHost(Tpetra::Access::OverwriteAll);
+    for (std::size_t r = 0; r < dm.regionNames.size() && error.empty(); ++r)
+        error = regionState(md, r, mats, sh, massH, matH, vol);
+    error = mpi::firstMessage(md.comm, error);
+    if (!error.empty())
+        return error;
+    if (md.scene.hasDeposit)
+        depositEnergy(md, sh, massH);
+    auto cellMaterial = Kokkos::create_mirror_view(md.cellMaterial);
+    for (LO i = 0; i < dm.nCells; ++i)
+        cellMaterial(i) = int(matH(i, 0));
+    Kokkos::deep_copy(md.cellMaterial, cellMaterial);
+    return {};
+}
+
+} // namespace unilag

@@ -1,0 +1,143 @@
+/*! \file GprModel.hpp
+ *  \brief The discretised GPR model of one run: mesh, field set, derived cell quantities, geometry, materials and
+ *  boundary table. Plain data shared by the operator (GprOperator.hpp), the set-up (GprSetup.hpp), the
+ *  diagnostics and the output; the dimension D and physics variant P (Physics.hpp) are compile-time.
+ *
+ *  Field names (FieldSet), persistent unless said:
+ *   cells  state (omega, v, E[, G_e][, J]: StateLayout), mass, material (index, as a double), sigma_prev
+ *          (strain: the Picard start's history), sigma_prev2 (strain, order 2), plastic_hint (plastic: each cell's
+ *          last plastic-flow parameter), plastic_hint_corrector (plastic, order 2); scratch: state_new, sigma
+ *          (the stress iterate), sigma_next, sigma0, state_mid, gradients;
+ *   nodes  x (positions); scratch: x_new, v_node, v_node0, x_mid.
+ */
+#pragma once
+
+#include <limits>
+#include <memory>
+#include <string>
+#include <utility>
+#include <vector>
+
+#include "config/Scene.hpp"
+#include "core/Mpi.hpp"
+#include "core/Timers.hpp"
+#include "physics/Expression.hpp"
+#include "state/FieldSet.hpp"
+#include "unilag/Hydro.hpp"
+
+namespace unilag
+{
+
+//! One column of a field as a rank-1 device view over all local rows (mass, material index, plastic hints).
+inline View<double*> column(MV& field, int c = 0)
+{
+    return Kokkos::subview(field.getLocalViewDevice(Tpetra::Access::ReadWrite), Kokkos::ALL(), c);
+}
+
+//! The centroid of local cell i in the initial configuration.
+template <int D>
+void initialCentroid(const DistributedMesh& dm, LO i, double (&c)[3])
+{
+    c[0] = c[1] = c[2] = 0.0;
+    for (int k = 0; k < D + 1; ++k)
+        for (int d = 0; d < D; ++d)
+            c[d] += dm.coords0[3 * dm.cellNodesHost[(D + 1) * i + k] + d] / (D + 1);
+}
+template <int D, class P>
+struct GprModel
+{
+    using S = StateLayout<D, P>;
+
+    GprModel(const Scene& scene, std::shared_ptr<DistributedMesh> mesh);
+
+    const Scene& scene;
+    std::shared_ptr<DistributedMesh> mesh;
+    MPI_Comm comm;
+    int rank = 0, size = 1;
+    MeshView<D> m;
+    FieldSet fields;
+    bool order2;
+    Limiter limiter;
+
+    Field fnode, aux;            //!< subcell force sums at owned nodes; EOS, speeds, temperature, stress at t^n
+    Field heatRate;              //!< heat: m dE/dt and m dJ/dt of the fluxes at t^n (owned cells)
+    Field auxMid, sigmaMid;      //!< order 2: EOS and shear stress at the midpoint
+    Field heatRateMid;           //!< order 2, heat: midpoint fluxes
+    CellGeometry geom, geomNew;  //!< at t^n; the next step's (owned cells, written by the update)
+    CellGeometry geomMid;        //!< order 2: the midpoint configuration
+    View<int*> cellMaterial;     //!< the material field as integers, for the kernels
+    View<const Material*> materials;
+    BoundaryView bc;
+    Kokkos::View<double* [3], MemSpace> bcValue;                            //!< bc.value, writable
+    Kokkos::View<double* [3], MemSpace>::HostMirror bcValueHost;
+    std::vector<std::pair<int, std::unique_ptr<Expression>>> pressureLaws; //!< time-dependent imposed pressures
+    PhaseTimers timers;
+
+    ConstField read(const std::string& f) const { return fields[f].getLocalViewDevice(Tpetra::Access::ReadOnly); }
+    Field write(const std::string& f) const { return fields[f].getLocalViewDevice(Tpetra::Access::ReadWrite); }
+    Field overwrite(const std::string& f) const { return fields[f].getLocalViewDevice(Tpetra::Access::OverwriteAll); }
+    View<const double*> mass() const { return column(fields["mass"]); }
+    //! Plastic variant: the warm-start hints of the predictor (or first-order step) or of the corrector.
+    View<double*> plasticHint(bool corrector) const
+    {
+        if constexpr (!P::plastic)
+            return View<double*>();
+        return column(fields[corrector ? "plastic_hint_corrector" : "plastic_hint"]);
+    }
+};
+
+template <int D, class P>
+GprModel<D, P>::GprModel(const Scene& scene_, std::shared_ptr<DistributedMesh> mesh_)
+    : scene(scene_), mesh(std::move(mesh_)), comm(mpi::rawComm(mesh->comm)), m(mesh->view<D>()), fields(mesh),
+      order2(scene.order == 2), limiter(scene.limiter)
+{
+    rank = mpi::rank(comm);
+    size = mpi::size(comm);
+    const auto& dm = *mesh;
+    const auto P_ = Lifetime::Persistent, S_ = Lifetime::Scratch;
+    fields.add("state", Entity::Cell, S::ncomp, P_);
+    fields.add("state_new", Entity::Cell, S::ncomp, S_);
+    fields.add("mass", Entity::Cell, 1, P_);
+    fields.add("material", Entity::Cell, 1, P_);
+    fields.add("x", Entity::Node, D, P_);
+    fields.add("x_new", Entity::Node, D, S_);
+    fields.add("v_node", Entity::Node, D, S_);
+    fnode = Field("unilag::fnode", dm.nOwnedNodes, D);
+    aux = Field("unilag::aux", dm.nCells, Aux::ncomp<P>());
+    if constexpr (P::strain)
+    {
+        for (const char* f : {"sigma", "sigma_next", "sigma0"})
+            fields.add(f, Entity::Cell, 6, S_);
+        fields.add("sigma_prev", Entity::Cell, 6, P_);
+        if (order2)
+            fields.add("sigma_prev2", Entity::Cell, 6, P_);
+        if constexpr (P::plastic)
+            for (const char* f : {"plastic_hint", "plastic_hint_corrector"})
+                if (order2 || std::string(f) == "plastic_hint")
+                {
+                    fields.add(f, Entity::Cell, 1, P_);
+                    Kokkos::deep_copy(column(fields[f]), std::numeric_limits<double>::quiet_NaN());
+                }
+    }
+    if constexpr (P::heat)
+        heatRate = Field("unilag::heatRate", dm.nOwnedCells, 1 + D);
+    geom = CellGeometry(dm.nCells, D);
+    geomNew = CellGeometry(dm.nCells, D);
+    if (P::strain || order2)
+        fields.add("v_node0", Entity::Node, D, S_);
+    if (order2)
+    {
+        fields.add("state_mid", Entity::Cell, S::ncomp, S_);
+        fields.add("x_mid", Entity::Node, D, S_);
+        fields.add("gradients", Entity::Cell, ReconLayout<D, P>::ncomp, S_);
+        geomMid = CellGeometry(dm.nCells, D);
+        auxMid = Field("unilag::auxMid", dm.nCells, Aux::ncomp<P>());
+        if constexpr (P::strain)
+            sigmaMid = Field("unilag::sigmaMid", dm.nCells, 6);
+        if constexpr (P::heat)
+            heatRateMid = Field("unilag::heatRateMid", dm.nOwnedCells, 1 + D);
+    }
+    cellMaterial = View<int*>("unilag::cellMaterial", dm.nCells);
+}
+
+} // namespace unilag

@@ -1,0 +1,179 @@
+/*! \file GprOperator.hpp
+ *  \brief The GPR operator: what one configuration and state give, independent of how stages are combined.
+ *
+ *  - derived quantities at t^n: geometry, EOS, speeds, temperature, shear stress (computeAux);
+ *  - the nodal solve: node velocities and subcell forces for a stress iterate (solveNodes), or for a reconstructed
+ *    midpoint state (solveNodesAt);
+ *  - the implicit coupling of the stress: the Picard loop (2.4) over trajectories, GCL volume and the G_e
+ *    transport + stiff relaxation (picard, in GprPicard.hpp);
+ *  - the explicit rates: heat fluxes (heatFluxes), and the conservative update of v, E, omega (and J) from the
+ *    forces of a given flux state (updateCells);
+ *  - the stable time step, the boundary impulse and work.
+ *  The integrators (Integrators.hpp) call these in the order of their stages; the time loop knows neither.
+ */
+#pragma once
+
+#include <string>
+
+#include "solver/GprModel.hpp"
+#include "unilag/Heat.hpp"
+
+namespace unilag
+{
+
+template <int D, class P>
+class GprOperator
+{
+    using S = StateLayout<D, P>;
+
+  public:
+    explicit GprOperator(GprModel<D, P>& model) : md_(model) {}
+    GprModel<D, P>& model() { return md_; }
+
+    //! EOS, signal speeds, temperature and sigma^n (into the field sigma) for all local cells.
+    void computeAux()
+    {
+        ScopedTimer timer(md_.timers, Phase::Eos);
+        auto s = md_.read("state");
+        Field sigma;
+        if constexpr (P::strain)
+            sigma = md_.overwrite("sigma");
+        computeEos<D, P>(s, md_.cellMaterial, md_.materials, md_.aux, md_.m.nCells, sigma);
+    }
+
+    //! Geometry of local cells [first, nCells) at the current positions.
+    void refreshGeometry(LO first = 0)
+    {
+        ScopedTimer t(md_.timers, Phase::Geometry);
+        computeGeometry<D>(md_.m, md_.read("x"), md_.geom, md_.m.nCells, first);
+    }
+
+    //! Imposed boundary pressures at time t (scene expressions of t).
+    void setBoundaryTime(double t)
+    {
+        if (md_.pressureLaws.empty())
+            return;
+        for (auto& [g, law] : md_.pressureLaws)
+            md_.bcValueHost(g, 0) = (*law)(0.0, 0.0, 0.0, t);
+        Kokkos::deep_copy(md_.bcValue, md_.bcValueHost);
+    }
+
+    //! Nodal solve at owned nodes with T = -p^n I + sigma (strain), then node velocities to all local nodes.
+    void solveNodes()
+    {
+        {
+            ScopedTimer timer(md_.timers, Phase::NodalSolve);
+            ConstField sigma;
+            if constexpr (P::strain)
+                sigma = md_.read("sigma");
+            nodalSolve<D, P>(md_.m, md_.bc, md_.read("state"), md_.aux, md_.geom, md_.write("v_node"), md_.fnode,
+                             sigma);
+        }
+        halo("v_node");
+    }
+
+    //! Explicit heat fluxes of the state at t^n (2.3): independent of dt.
+    void heatFluxes()
+    {
+        ScopedTimer timer(md_.timers, Phase::HeatFluxes);
+        unilag::heatFluxes<D, P>(md_.m, md_.bc, md_.read("state"), md_.aux, md_.geom, md_.cellMaterial, md_.materials,
+                         md_.heatRate);
+    }
+
+    //! The largest stable step over all ranks: CFL and the volume-change bound. Collective.
+    double stableTimeStep()
+    {
+        ScopedTimer timer(md_.timers, Phase::TimeStep);
+        return mpi::allMin(md_.comm, unilag::stableTimeStep<D>(md_.m, md_.aux, md_.geom, md_.read("v_node"),
+                                                                md_.scene.cfl, md_.scene.maxVolumeChange));
+    }
+
+    void halo(const std::string& field)
+    {
+        ScopedTimer timer(md_.timers, Phase::Halo);
+        md_.fields.halo(field);
+    }
+
+    /*! First-order update of the owned cells over dt from the forces of the state at t^n (2b, 2c) and the Simpson
+     *  GCL (2a), into state_new, x_new, geomNew. Strain variants: the converged Picard iterate has moved the nodes
+     *  and left G^{n+1} in state_new. Returns the global validity extrema. Collective. */
+    UpdateCheck updateCells(double dt)
+    {
+        ScopedTimer timer(md_.timers, Phase::CellUpdate);
+        auto x = md_.read("x");
+        auto v = md_.read("v_node");
+        auto xn = md_.write("x_new");
+        if constexpr (!P::strain)
+            moveNodes(x, v, dt, xn, md_.m.nNodes, D);
+        ConstField sigma;
+        if constexpr (P::strain)
+            sigma = md_.read("sigma");
+        return reduceCheck(unilag::updateCells<D, P>(md_.m, md_.read("state"), md_.aux, md_.geom, md_.mass(),
+                                                     md_.cellMaterial, md_.materials, x, xn, v, dt,
+                                                     md_.write("state_new"), sigma, md_.heatRate, md_.geomNew));
+    }
+
+    //! The impulse and work of this step's nodal forces over dt, added to impulse and work. Collective.
+    void boundaryImpulse(double dt, double (&impulse)[D], double& work)
+    {
+        auto v = md_.read("v_node");
+        auto f = md_.fnode;
+        auto sum = KOKKOS_LAMBDA(const LO r, double (&acc)[D + 1])
+        {
+            for (int d = 0; d < D; ++d)
+            {
+                acc[d] += f(r, d);
+                acc[D] += f(r, d) * v(r, d);
+            }
+        };
+        double acc[D + 1];
+        sumReduce<D + 1>("unilag::diagnostics::boundary", md_.m.nOwnedNodes, sum, acc);
+        mpi::allSum(md_.comm, acc);
+        for (int d = 0; d < D; ++d)
+            impulse[d] += dt * acc[d];
+        work += dt * acc[D];
+    }
+
+    /*! The new state becomes the state: its ghosts are exchanged, positions and the owned cells' geometry taken
+     *  over from the update, the ghosts' geometry and every cell's EOS recomputed. Collective. */
+    void advance()
+    {
+        halo("state_new");
+        md_.fields.swap("state", "state_new");
+        md_.fields.swap("x", "x_new");
+        std::swap(md_.geom, md_.geomNew); // owned cells: written by the update; ghosts are computed here
+        refreshGeometry(md_.m.nOwnedCells);
+        computeAux();
+    }
+
+    //! The global extrema of a cell update's checks. Collective.
+    UpdateCheck reduceCheck(UpdateCheck check)
+    {
+        double ext[3] = {-check.minVolumeRatio, -check.minSound2, check.maxGclDefect};
+        MPI_Allreduce(MPI_IN_PLACE, ext, 3, MPI_DOUBLE, MPI_MAX, md_.comm);
+        check.minVolumeRatio = -ext[0];
+        check.minSound2 = -ext[1];
+        check.maxGclDefect = ext[2];
+        return check;
+    }
+
+    // Strain variants: the Picard coupling (GprPicard.hpp).
+    void startPicard(long step);
+    void notePredictorStress();
+    bool picard(double dt, int& iterations, std::string& failure);
+    std::string inadmissible(LO badCell, const std::string& where, double dt);
+
+    // Second order: the corrector's pieces (GprCorrector.hpp).
+    void midpointState(double t, double dt);
+    bool correctorUpdate(double dt, UpdateCheck& check, std::string& failure);
+
+  private:
+    PicardCheck strainStep(double dt, bool midpoint);
+    GprModel<D, P>& md_;
+    Reconstruction<D> rec_; //!< order 2: the midpoint state's limited gradients
+};
+
+} // namespace unilag
+
+#include "solver/GprCorrector.hpp"
+#include "solver/GprPicard.hpp"

@@ -1,0 +1,194 @@
+/*! \file GprRun.hpp
+ *  \brief One GPR run from a distributed mesh to an exit code: set-up, the time loop, then conservation, errors
+ *  against the exact solution, summary.json, the one-line summary and the self-check (--check).
+ */
+#pragma once
+
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+
+#include "solver/GprSetup.hpp"
+#include "solver/GprSystem.hpp"
+#include "solver/RunOptions.hpp"
+#include "solver/Summary.hpp"
+
+namespace unilag
+{
+
+//! Conservation over a run: mass from the geometry (GCL), momentum and energy net of boundary impulse and work.
+struct Conservation
+{
+    double mass = 0.0, momentum = 0.0, energy = 0.0;
+};
+
+template <int D>
+Conservation conservation(const double (&initial)[D + 3], const double (&final_)[D + 3], const double (&impulse)[D],
+                          double work)
+{
+    Conservation c;
+    c.mass = std::abs(final_[0] - initial[0]) / initial[0];
+    double dp = 0.0;
+    for (int d = 0; d < D; ++d)
+        dp += std::pow(final_[1 + d] - initial[1 + d] - impulse[d], 2);
+    // relative to the momentum in play: sum m|v|, or for a body nearly at rest sqrt(2 M E), the momentum its
+    // energy could give it (the forces whose round-off this measures scale with it)
+    const double momentumScale =
+        std::max(final_[2 + D] + initial[2 + D], std::sqrt(2.0 * initial[0] * std::abs(initial[1 + D])));
+    c.momentum = std::sqrt(dp) / std::max(momentumScale, 1e-300);
+    // relative to the largest energy in play (a body at rest hit by a piston starts with none)
+    const double energyScale = std::max({std::abs(initial[1 + D]), std::abs(final_[1 + D]), std::abs(work)});
+    c.energy = std::abs(final_[1 + D] - initial[1 + D] - work) / std::max(energyScale, 1e-300);
+    return c;
+}
+
+//! Errors against the scene's exact solution (Sedov: self-similar radial profile); -1 where there is none.
+struct ExactErrors
+{
+    double l1 = -1.0, shock = -1.0, exactShock = 0.0;
+};
+
+template <int D, class P>
+ExactErrors exactErrors(const GprModel<D, P>& md, double t)
+{
+    ExactErrors e;
+    e.exactShock = md.scene.exactShockRadius;
+    if (md.scene.exactSolution != ExactSolution::Sedov)
+        return e;
+    // R(t) = R(t_table) (t / t_table)^alpha, alpha = 2 / (d + 2) (planar energy release in d dimensions); the
+    // profile is a function of r / R(t).
+    const RadialProfile exact(md.scene.exactTable);
+    const double scale = std::pow(t / md.scene.exactTime, 2.0 / (D + 2.0));
+    e.l1 = radialL1Density(md, exact, 1.0 / scale);
+    e.shock = shockRadius(md, exact);
+    e.exactShock *= scale;
+    return e;
+}
+
+//! --check: conservation to round-off and the scene's error bounds; prints what failed (rank 0).
+template <int D, class P>
+int selfCheck(const GprModel<D, P>& md, const Conservation& c, double gcl, const ExactErrors& x,
+              const std::vector<double>& radii)
+{
+    std::vector<std::string> fails;
+    auto bound = [&](const std::string& what, double value, double limit) {
+        if (!(value <= limit))
+        {
+            std::ostringstream os;
+            os << what << " = " << value << " exceeds " << limit;
+            fails.push_back(os.str());
+        }
+    };
+    // Round-off bounds: everything is conservative by construction.
+    bound("mass relative change", c.mass, 1e-12);
+    bound("momentum relative change", c.momentum, 1e-12);
+    bound("energy relative change", c.energy, 1e-12);
+    bound("GCL defect |m omega - |T|| / |T|", gcl, 1e-12);
+    const Scene& scene = md.scene;
+    if (scene.maxL1Density > 0.0)
+        bound("L1(density) error", x.l1, scene.maxL1Density);
+    if (scene.shockRadiusTolerance > 0.0)
+        bound("relative shock radius error", std::abs(x.shock - x.exactShock) / x.exactShock,
+              scene.shockRadiusTolerance);
+    if (scene.radiusTolerance > 0.0)
+        for (const auto& [group, exact] : scene.boundaryRadius)
+        {
+            const auto& names = md.mesh->boundaryNames;
+            const auto it = std::find(names.begin(), names.end(), group);
+            const double r = it == names.end() ? -1.0 : radii[it - names.begin()];
+            bound("relative error of the mean radius of '" + group + "'", std::abs(r - exact) / exact,
+                  scene.radiusTolerance);
+        }
+    if (md.rank == 0)
+    {
+        for (const auto& f : fails)
+            std::fprintf(stderr, "unilag: check failed: %s\n", f.c_str());
+        if (fails.empty())
+            std::printf("unilag: check passed\n");
+    }
+    return fails.empty() ? ExitOk : ExitCheck;
+}
+
+template <int D, class P>
+void writeSummary(const GprModel<D, P>& md, const GprSystem<D, P>& sys, const RunOptions& options,
+                  const LoopResult& r, const Conservation& c, const ExactErrors& x, const std::vector<double>& radii)
+{
+    const auto& dm = *md.mesh;
+    const double cellSteps = double(dm.nGlobalCells) * double(r.steps) / std::max(r.wallSeconds, 1e-300);
+    const double picardMean = r.steps > 0 ? double(sys.picardTotal()) / r.steps : 0.0;
+    Summary s = runSummary(md.scene.file, md.scene.name, r, D, dm.nGlobalCells, dm.nGlobalNodes, md.size,
+                           options.threads);
+    s.object("physics", {{"strain", P::strain ? "true" : "false"},
+                         {"plastic", P::plastic ? "true" : "false"},
+                         {"heat", P::heat ? "true" : "false"}});
+    s.object("picard_iterations", {{"mean", jsonNumber(picardMean)}, {"max", std::to_string(sys.picardMax())}});
+    s.number("t_final", r.t).number("wall_seconds", r.wallSeconds).number("cell_steps_per_second", cellSteps);
+    s.number("mass_relative_change", c.mass).number("momentum_relative_change", c.momentum);
+    s.number("energy_relative_change", c.energy).number("max_gcl_defect", sys.maxGclDefect());
+    s.number("boundary_work", sys.work());
+    if (x.l1 >= 0.0)
+        s.number("l1_density_error", x.l1).number("shock_radius", x.shock).number("exact_shock_radius", x.exactShock);
+    std::vector<std::pair<std::string, std::string>> mean;
+    for (std::size_t g = 0; g < radii.size(); ++g)
+        mean.emplace_back(dm.boundaryNames[g], jsonNumber(radii[g]));
+    s.object("boundary_mean_radius", mean);
+    s.timeShares(md.timers, r.wallSeconds);
+    if (!r.failure.empty())
+        s.text("failure", r.failure);
+    s.text("output", sys.writer() ? sys.writer()->collectionPath() : std::string());
+    if (md.rank != 0)
+        return;
+    s.write((std::filesystem::path(md.scene.outputDirectory) / "summary.json").string());
+    std::printf("unilag: %s %dD, %lld cells, %d rank(s) x %d thread(s): %ld steps to t = %.6g in %.3g s "
+                "(%.3g cell-steps/s); mass %.1e, momentum %.1e, energy %.1e",
+                md.scene.name.c_str(), D, (long long)dm.nGlobalCells, md.size, options.threads, r.steps, r.t,
+                r.wallSeconds, cellSteps, c.mass, c.momentum, c.energy);
+    if (P::strain)
+        std::printf("; Picard %.2f mean, %d max", picardMean, sys.picardMax());
+    if (x.l1 >= 0.0)
+        std::printf("; L1(density) %.4g, shock radius %.4g", x.l1, x.shock);
+    std::printf("\nunilag: output in %s\n",
+                (sys.writer() ? sys.writer()->collectionPath() : md.scene.outputDirectory).c_str());
+}
+
+//! Runs the scene on the distributed mesh; returns an ExitCode. Collective.
+template <int D, class P>
+int runGpr(const Scene& scene, std::shared_ptr<DistributedMesh> mesh, const RunOptions& options)
+{
+    GprModel<D, P> md(scene, mesh);
+    const std::string error = initialize(md);
+    if (!error.empty())
+    {
+        if (md.rank == 0)
+            std::fprintf(stderr, "unilag: error: %s\n", error.c_str());
+        return ExitInput;
+    }
+    // Only now, with the input fully validated, does anything get written.
+    if (md.rank == 0)
+    {
+        std::filesystem::create_directories(scene.outputDirectory);
+        writeScene(scene, (std::filesystem::path(scene.outputDirectory) / "scene.yaml").string());
+    }
+    MPI_Barrier(md.comm);
+    GprSystem<D, P> sys(md);
+    if (scene.writeOutput)
+        sys.openOutput(scene.outputDirectory);
+    sys.start();
+    double initial[D + 3], final_[D + 3];
+    totals(md, initial);
+    const LoopResult r = runTimeLoop(sys, timeControl(scene, options), md.comm);
+    totals(md, final_);
+    const Conservation c = conservation<D>(initial, final_, sys.impulse(), sys.work());
+    const ExactErrors x = r.failure.empty() ? exactErrors(md, r.t) : ExactErrors{};
+    const std::vector<double> radii = boundaryRadii(md);
+    writeSummary(md, sys, options, r, c, x, radii);
+    if (!r.failure.empty())
+    {
+        if (md.rank == 0)
+            std::fprintf(stderr, "unilag: error: the run went unstable: %s\n", r.failure.c_str());
+        return ExitUnstable;
+    }
+    return options.check ? selfCheck(md, c, sys.maxGclDefect(), x, radii) : ExitOk;
+}
+
+} // namespace unilag

@@ -1,0 +1,119 @@
+/*! \file GprSystem.hpp
+ *  \brief The GPR solver as the time loop sees it (TimeSystem): model, operator and integrator, the retry
+ *  bookkeeping of a step, output, and the conservation bookkeeping (boundary impulse and work, GCL defect).
+ */
+#pragma once
+
+#include <memory>
+#include <string>
+#include <variant>
+
+#include "core/Format.hpp"
+#include "solver/GprDiagnostics.hpp"
+#include "solver/GprOutput.hpp"
+#include "solver/Integrators.hpp"
+#include "solver/TimeLoop.hpp"
+
+namespace unilag
+{
+
+template <int D, class P>
+class GprSystem : public TimeSystem
+{
+  public:
+    explicit GprSystem(GprModel<D, P>& model) : md_(model), op_(model), euler_(op_), midpoint_(op_) {}
+
+    void openOutput(const std::string& dir) { writer_ = makeWriter(md_, dir); }
+    const io::XdmfWriter* writer() const { return writer_.get(); }
+
+    //! Geometry and EOS of the initial state. Collective.
+    void start()
+    {
+        op_.refreshGeometry();
+        op_.computeAux();
+    }
+
+    double prepareStep(double t, long step) override
+    {
+        // The nodal solve on the configuration at t^n (geometry and EOS are current for all local cells).
+        op_.setBoundaryTime(t);
+        if constexpr (P::strain)
+            op_.startPicard(step);
+        op_.solveNodes();
+        if constexpr (P::heat)
+            op_.heatFluxes();
+        return op_.stableTimeStep();
+    }
+
+    void beginAttempts() override
+    {
+        stage_ = StageResult{};
+        if (md_.fields.has("v_node0"))
+            md_.fields.copy("v_node", "v_node0"); // v^0 and sigma^n do not depend on dt
+    }
+
+    bool attemptStep(double t, double dt, int attempt, int& iterations) override
+    {
+        stage_.failure.clear();
+        if (attempt > 0 && md_.fields.has("v_node0"))
+        {
+            md_.fields.copy("v_node0", "v_node");
+            op_.setBoundaryTime(t);
+        }
+        if constexpr (P::strain)
+            if (attempt > 0)
+                md_.fields.copy("sigma0", "sigma");
+        const bool ok = md_.order2 ? midpoint_.step(t, dt, stage_) : euler_.step(t, dt, stage_);
+        iterations = stage_.iterations;
+        return ok;
+    }
+
+    std::string failure(double t, double dt, int attempts) override
+    {
+        if (!stage_.failure.empty())
+            return "at t = " + jsonNumber(t) + " after " + std::to_string(attempts) + " halvings of dt: " +
+                   stage_.failure;
+        return diagnose(md_, stage_.check, t, dt, attempts);
+    }
+
+    void acceptStep(double /*t*/, double dt, int iterations) override
+    {
+        if constexpr (P::strain)
+            if (md_.order2)
+                op_.notePredictorStress();
+        picardTotal_ += iterations;
+        picardMax_ = std::max(picardMax_, iterations);
+        maxGcl_ = std::max(maxGcl_, stage_.check.maxGclDefect);
+        op_.boundaryImpulse(dt, impulse_, work_);
+        op_.advance();
+    }
+
+    std::string collapse(double t, double dt, long step) override { return unilag::collapse(md_, t, dt, step); }
+
+    void write(int index, double t) override
+    {
+        if (writer_)
+            dump(md_, *writer_, index, t);
+    }
+
+    long picardTotal() const { return picardTotal_; }
+    int picardMax() const { return picardMax_; }
+    double maxGclDefect() const { return maxGcl_; }
+    const double (&impulse() const)[D] { return impulse_; }
+    double work() const { return work_; }
+
+  private:
+    GprModel<D, P>& md_;
+    GprOperator<D, P> op_;
+    ForwardEuler<D, P> euler_;
+    Midpoint<D, P> midpoint_;
+    std::unique_ptr<io::XdmfWriter> writer_;
+    StageResult stage_;
+    long picardTotal_ = 0;
+    int picardMax_ = 0;
+    double maxGcl_ = 0.0;
+    double impulse_[D] = {};
+    double work_ = 0.0;
+};
+
+} // namespace unilag

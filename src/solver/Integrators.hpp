@@ -1,0 +1,72 @@
+/*! \file Integrators.hpp
+ *  \brief The time integrators of the GPR system: short classes that call the operator's stages in order and know
+ *  nothing of the physics (Laghos' ODE solvers, ARKODE's steppers). The rates at t^n (nodal solve with the first
+ *  stress iterate, heat fluxes) are computed before the attempts, since they do not depend on dt.
+ *   - ForwardEuler (scheme.order 1): the implicit Picard stage over dt, then the explicit update (gpr.md 2.1-2.4).
+ *   - Midpoint (scheme.order 2): the same over dt/2 as the predictor, then the corrector over dt with the
+ *     reconstructed midpoint fluxes (gpr.md 2.5; the paper's IMEX ARS(2,2,2) is not implemented).
+ */
+#pragma once
+
+#include <string>
+
+#include "solver/GprOperator.hpp"
+
+namespace unilag
+{
+
+//! Whether a cell update left every cell with a positive volume and a positive squared sound speed.
+inline bool admissible(const UpdateCheck& check)
+{
+    return check.minVolumeRatio > 0.0 && check.minSound2 > 0.0;
+}
+
+//! The result of one attempt at a step, for the diagnosis if every attempt fails.
+struct StageResult
+{
+    int iterations = 0;  //!< Picard iterations of the (last) implicit stage
+    UpdateCheck check{}; //!< the last cell update's extrema
+    std::string failure; //!< the implicit solve's or G_e update's failure, "" if none
+};
+
+//! First-order stage: Picard coupling of the stress (strain variants), then the update of the cells over dt.
+template <int D, class P>
+bool eulerStage(GprOperator<D, P>& op, double dt, StageResult& r)
+{
+    bool ok = true;
+    if constexpr (P::strain)
+        ok = op.picard(dt, r.iterations, r.failure);
+    if (ok)
+        r.check = op.updateCells(dt);
+    return ok && admissible(r.check);
+}
+
+template <int D, class P>
+class ForwardEuler
+{
+  public:
+    explicit ForwardEuler(GprOperator<D, P>& op) : op_(op) {}
+    bool step(double /*t*/, double dt, StageResult& r) { return eulerStage(op_, dt, r); }
+
+  private:
+    GprOperator<D, P>& op_;
+};
+
+template <int D, class P>
+class Midpoint
+{
+  public:
+    explicit Midpoint(GprOperator<D, P>& op) : op_(op) {}
+    bool step(double t, double dt, StageResult& r)
+    {
+        if (!eulerStage(op_, 0.5 * dt, r)) // predictor: Q^{n+1/2}
+            return false;
+        op_.midpointState(t, dt);
+        return op_.correctorUpdate(dt, r.check, r.failure) && admissible(r.check);
+    }
+
+  private:
+    GprOperator<D, P>& op_;
+};
+
+} // namespace unilag

@@ -1,0 +1,36 @@
+/*! \file RunOptions.hpp
+ *  \brief Options of a run that come from the command line, not the scene, and the time control a scene gives.
+ */
+#pragma once
+
+#include <filesystem>
+
+#include "config/Scene.hpp"
+#include "solver/TimeLoop.hpp"
+
+namespace unilag
+{
+
+struct RunOptions
+{
+    bool check = false; //!< assert conservation and the scene's error bounds
+    int threads = 1;    //!< Kokkos threads (reported)
+    bool progress = true;
+};
+
+//! The time loop's settings from a continuum scene.
+inline TimeControl timeControl(const Scene& scene, const RunOptions& options)
+{
+    TimeControl c;
+    c.endTime = scene.endTime;
+    c.outputInterval = scene.outputInterval;
+    c.initialTimeStep = scene.initialTimeStep;
+    c.maxGrowth = scene.maxGrowth;
+    c.maxSteps = scene.maxSteps;
+    c.maxRetries = scene.maxRetries;
+    c.progress = options.progress;
+    c.stepsCsv = (std::filesystem::path(scene.outputDirectory) / "steps.csv").string();
+    return c;
+}
+
+} // namespace unilag

@@ -1,0 +1,143 @@
+#include "solver/TimeLoop.hpp"
+
+#include <algorithm>
+#include <chrono>
+#include <cstdio>
+#include <fstream>
+#include <iomanip>
+#include <memory>
+#include <unistd.h>
+
+#include "core/Format.hpp"
+
+namespace unilag
+{
+namespace
+{
+
+using Clock = std::chrono::steady_clock;
+
+//! The progress line: on a terminal one updating line, otherwise a line every 5 seconds (rank 0).
+class Progress
+{
+  public:
+    Progress(bool enabled, double endTime) : enabled_(enabled), endTime_(endTime), tty_(isatty(fileno(stdout))) {}
+    void report(long step, double t, double dt)
+    {
+        if (!enabled_)
+            return;
+        const auto now = Clock::now();
+        const double since = std::chrono::duration<double>(now - last_).count();
+        if ((tty_ && since > 0.2) || since > 5.0)
+        {
+            const double el = std::chrono::duration<double>(now - start_).count();
+            const double eta = el * (endTime_ - t) / std::max(t, 1e-300);
+            std::printf("%sstep %ld  t %.6g  dt %.3g  %5.1f%%  ETA %.0fs%s", tty_ ? "\r" : "", step, t, dt,
+                        100.0 * t / endTime_, eta, tty_ ? "   " : "\n");
+            std::fflush(stdout);
+            last_ = now;
+        }
+    }
+    ~Progress()
+    {
+        if (enabled_ && tty_)
+            std::printf("\n");
+    }
+
+  private:
+    bool enabled_;
+    double endTime_;
+    bool tty_;
+    Clock::time_point start_ = Clock::now(), last_ = start_;
+};
+
+/*! The step size before any halving: the stable step, a tenth of it first, at most maxGrowth times the last one,
+ *  and clipped to the next output time. Sets failure if it is not positive or has collapsed. */
+double chooseStep(TimeSystem& system, const TimeControl& c, double t, double dtPrev, long step, double nextOutput,
+                  std::string& failure)
+{
+    double dt = system.prepareStep(t, step);
+    if (!(dt > 0.0) || !std::isfinite(dt))
+    {
+        failure = "the stable time step is " + jsonNumber(dt) + " at t = " + jsonNumber(t);
+        return 0.0;
+    }
+    dt = dtPrev > 0.0 ? std::min(dt, c.maxGrowth * dtPrev) : 0.1 * dt;
+    if (dt < 1e-12 * c.endTime)
+    {
+        failure = system.collapse(t, dt, step);
+        return 0.0;
+    }
+    const double target = std::min(nextOutput, c.endTime);
+    if (t + dt > target * (1.0 - 1e-12))
+        dt = target - t;
+    if (!(dt > 0.0))
+        failure = "internal: zero time step at t = " + jsonNumber(t) + " (output time " + jsonNumber(target) + ")";
+    return dt;
+}
+
+} // namespace
+
+LoopResult runTimeLoop(TimeSystem& system, const TimeControl& c, MPI_Comm comm)
+{
+    int rank;
+    MPI_Comm_rank(comm, &rank);
+    LoopResult r;
+    int dumps = 0;
+    double dtPrev = c.initialTimeStep;
+    double nextOutput = c.outputInterval > 0 ? c.outputInterval : c.endTime;
+    system.write(dumps++, r.t);
+    std::unique_ptr<std::ofstream> steps;
+    if (rank == 0 && !c.stepsCsv.empty())
+    {
+        steps = std::make_unique<std::ofstream>(c.stepsCsv);
+        *steps << "step,t,dt,picard_iterations,dt_halvings\n";
+    }
+    const auto wall0 = Clock::now();
+    {
+        Progress progress(c.progress && rank == 0, c.endTime);
+        while (r.t < c.endTime * (1.0 - 1e-14) && r.steps < c.maxSteps)
+        {
+            double dt = chooseStep(system, c, r.t, dtPrev, r.steps, nextOutput, r.failure);
+            if (!r.failure.empty())
+                break;
+            // Rejected steps (an inverted cell, an inadmissible state, an unconverged implicit solve) are retried
+            // with half the step; the rates at t do not depend on dt.
+            system.beginAttempts();
+            int attempt = 0, iterations = 0;
+            bool ok = false;
+            for (;; ++attempt)
+            {
+                ok = system.attemptStep(r.t, dt, attempt, iterations);
+                if (ok || attempt >= c.maxRetries)
+                    break;
+                dt *= 0.5;
+                ++r.retries;
+            }
+            if (!ok)
+            {
+                r.failure = system.failure(r.t, dt, attempt);
+                break;
+            }
+            system.acceptStep(r.t, dt, iterations);
+            if (steps)
+                *steps << r.steps + 1 << ',' << std::setprecision(12) << r.t + dt << ',' << dt << ',' << iterations
+                       << ',' << attempt << '\n';
+            r.t += dt;
+            dtPrev = dt;
+            ++r.steps;
+            if (r.t >= nextOutput * (1.0 - 1e-12) && r.t < c.endTime * (1.0 - 1e-14))
+            {
+                system.write(dumps++, r.t);
+                nextOutput = c.outputInterval > 0 ? nextOutput + c.outputInterval : c.endTime;
+            }
+            progress.report(r.steps, r.t, dt);
+        }
+    }
+    r.wallSeconds = std::chrono::duration<double>(Clock::now() - wall0).count();
+    if (r.failure.empty())
+        system.write(dumps++, r.t);
+    return r;
+}
+
+} // namespace unilag

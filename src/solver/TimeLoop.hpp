@@ -1,0 +1,62 @@
+/*! \file TimeLoop.hpp
+ *  \brief The time loop every solver runs through (Laghos' driver): the step size (stable step, first-step
+ *  fraction, growth limit, output times, end time), cut-and-retry of rejected steps, the output cadence, steps.csv
+ *  and the progress line. It knows nothing of the physics or of how a step is integrated: a TimeSystem does.
+ */
+#pragma once
+
+#include <mpi.h>
+
+#include <string>
+
+namespace unilag
+{
+
+/*! What the time loop drives. Every member function is collective over the system's ranks. */
+class TimeSystem
+{
+  public:
+    virtual ~TimeSystem() = default;
+    //! Rates at t that do not depend on dt (step: the index of the step about to be taken); returns the largest
+    //! stable step over all ranks.
+    virtual double prepareStep(double t, long step) = 0;
+    //! Called once before the attempts at a step: keep what a retry must start from.
+    virtual void beginAttempts() = 0;
+    //! One attempt at the step [t, t + dt] (attempt 0, 1, ... after halvings); true if the result is admissible.
+    //! iterations: the implicit solver's count (0 if none).
+    virtual bool attemptStep(double t, double dt, int attempt, int& iterations) = 0;
+    //! The diagnosis of a step that every attempt failed.
+    virtual std::string failure(double t, double dt, int attempts) = 0;
+    //! The step's result becomes the state.
+    virtual void acceptStep(double t, double dt, int iterations) = 0;
+    //! The diagnosis of a time step that has collapsed (where the mesh tangles).
+    virtual std::string collapse(double t, double dt, long step) = 0;
+    //! Writes dump number index of the state at t (nothing if the scene writes no output).
+    virtual void write(int index, double t) = 0;
+};
+
+struct TimeControl
+{
+    double endTime = 1.0;
+    double outputInterval = 0.0;  //!< 0: first and last state only
+    double initialTimeStep = 0.0; //!< 0: a tenth of the first stable step
+    double maxGrowth = 1.1;       //!< of dt from one step to the next
+    long maxSteps = 10000000;
+    int maxRetries = 8;           //!< halvings of a rejected step before the run stops
+    bool progress = true;
+    std::string stepsCsv;         //!< per accepted step: t, dt, iterations, halvings (rank 0; "" for none)
+};
+
+struct LoopResult
+{
+    double t = 0.0;
+    long steps = 0;
+    int retries = 0;
+    double wallSeconds = 0.0; //!< from the first step to the last (without the first and last dumps)
+    std::string failure;      //!< "" if the run completed
+};
+
+//! Runs the system from t = 0 to the end time or the step cap. Collective.
+LoopResult runTimeLoop(TimeSystem& system, const TimeControl& control, MPI_Comm comm);
+
+} // namespace unilag
