@@ -1,7 +1,7 @@
 /*! \file Reconstruction.hpp
- *  \brief Second order in space (gpr.md 2.5): a limited linear reconstruction w_i(x) = w_i + phi_i grad w_i . (x - x_i)
- *  of the velocity, the pressure and (strain variants) the shear stress of each cell, which the nodal solver and the
- *  subcell forces evaluate at the nodes x_r instead of the cell values.
+ *  \brief Second order in space (docs/gpr-model.md 2.5): a limited linear reconstruction
+ *  w_i(x) = w_i + phi_i grad w_i . (x - x_i) of the velocity, the pressure and (strain variants) the shear stress of
+ *  each cell, which the nodal solver and the subcell forces evaluate at the nodes x_r instead of the cell values.
  *   - Gradient: weighted least squares over the node-neighbour stencil (every cell that shares a node with cell i,
  *     weights 1/|x_j - x_i|^2, a face neighbour counted once per shared node). The stencil is local for every owned
  *     cell (DistributedMesh's ghost layer); ghost cells receive their gradients by one halo exchange.
@@ -165,8 +165,8 @@ enum class Limiter
     VertexBased
 };
 
-/*! \brief Limited gradients of the owned cells (gpr.md 2.5) into grad (cells x ReconLayout::ncomp), from the cell
- *  values of all local cells (state and aux current for ghosts too, stress: the shear stress, strain variants) on
+/*! \brief Limited gradients of the owned cells (docs/gpr-model.md 2.5) into grad (cells x ReconLayout::ncomp), from the
+ *  cell values of all local cells (state and aux current for ghosts too, stress: the shear stress, strain variants) on
  *  the configuration x with geometry geom (centroids of all local cells). Limiter::None gives the plain
  *  least-squares gradients (exact for linear fields). Which limiter for which flow: README, Limiter.
  *  With bc given, slip walls and symmetry planes mirror the cell (file comment), and an imposed boundary pressure is
