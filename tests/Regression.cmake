@@ -107,7 +107,7 @@ else()
   message(WARNING "pvpython not found: the ParaView read-back test is skipped (scripts/setup.sh installs python3-paraview)")
 endif()
 
-# GPR hydrodynamic limit (issue 3): the full model with tau1 = 1e-14 (G_e, Picard loop, exact relaxation, stress in
+# GPR hydrodynamic limit: the full model with tau1 = 1e-14 (G_e, Picard loop, exact relaxation, stress in
 # the nodal solver) reproduces the Euler solver's 2D Sedov to 1e-6 in every field. Output only at the end, so that
 # no intermediate output time clips the steps (the c_sh = 1e-6 signal speed differs from c0 by ~1e-10 relative).
 add_test(NAME hydro_limit_euler COMMAND ${UNILAG} run ${INPUTS}/sedov2d.yaml --quiet --set mesh.size=0.0288

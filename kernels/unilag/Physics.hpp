@@ -2,8 +2,8 @@
  *  \brief What the kernels are compiled for: the physics variant of a scene, the material data, the column
  *  layouts of the cell state and of the derived (auxiliary) cell quantities, and the boundary tables.
  *
- *  A scene pays only for what it uses (docs/gpr-model.md 1; issue 3 item 5): the kernels are templates on a Physics
- *  tag, chosen once per run from the materials,
+ *  A scene pays only for what it uses (docs/gpr-model.md 1): the kernels are templates on a Physics tag, chosen once
+ *  per run from the materials,
  *   - strain:  some material has shear stiffness (c_sh > 0): the state carries G_e, the nodal solver the stress
  *              sigma, and the Picard loop iterates it;
  *   - plastic: some material relaxes G_e with the power law tau1(sigma_bar);
