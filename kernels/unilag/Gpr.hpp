@@ -1,7 +1,7 @@
 /*! \file Gpr.hpp
  *  \brief Point-wise physics of the Godunov-Peshkov-Romenski (GPR) model: symmetric 3x3 tensors with a Jacobi
  *  eigen-solver, the three equations of state, the elastic stress and energy, the strain (G_e) and heat (J)
- *  relaxation sources, the plastic relaxation time and the signal speeds.
+ *  relaxation sources and the plastic relaxation.
  *
  *  Section numbers cite docs/gpr-model.md, the model and scheme of Boscheri, Chiocchetti & Peshkov (JCP 2022).
  *  Everything is header-only and device-callable (Kokkos core only, Kokkos math functions, no std:: math).
@@ -386,7 +386,8 @@ KOKKOS_INLINE_FUNCTION double temperature(const EosParams& e, double rho, double
 }
 
 // ------------------------------------------------------------------------------------------------------------
-// Elasticity (docs/gpr-model.md 1.2) and signal speeds (docs/gpr-model.md 1.5)
+// Elasticity (docs/gpr-model.md 1.2). The signal speed (1.5) is formed in computeEos (Hydro.hpp), the heat
+// speed in Heat.hpp: each with its own operation order, which the results are bitwise tied to.
 // ------------------------------------------------------------------------------------------------------------
 
 /*! \brief Shear (elastic) stress sigma = -rho csh^2 G dev(G) (docs/gpr-model.md 1.2). G and dev G commute, so G dev G
@@ -400,18 +401,6 @@ KOKKOS_INLINE_FUNCTION Sym3 shearStress(double rho, double csh, const Sym3& G)
 KOKKOS_INLINE_FUNCTION double elasticEnergy(double csh, const Sym3& G)
 {
     return 0.25 * csh * csh * norm2(dev(G));
-}
-
-//! \brief Heat-wave speed squared c_h^2 = (alpha^2 / rho0^2)(theta / cv) (docs/gpr-model.md 1.2).
-KOKKOS_INLINE_FUNCTION double heatWaveSpeed2(double alpha, double rho0, double theta, double cv)
-{
-    return alpha * alpha / (rho0 * rho0) * (theta / cv);
-}
-
-//! \brief Per-cell signal speed a = sqrt(c0^2 + 4/3 csh^2 + ch^2) (docs/gpr-model.md 1.5); pass ch2 = 0 without heat.
-KOKKOS_INLINE_FUNCTION double waveSpeed(double c02, double csh, double ch2)
-{
-    return kmath::sqrt(c02 + (4.0 / 3.0) * csh * csh + ch2);
 }
 
 // ------------------------------------------------------------------------------------------------------------

@@ -336,7 +336,7 @@ TEST(EosNeoHookean, SignAndConsistency)
     EXPECT_NEAR(pressure(e, (1.0 + 1e-6) * e.rho0, 0.0) / (G * 1e-6), 1.0, 1e-5);
 }
 
-// ---- elastic stress, energy, signal speeds ----
+// ---- elastic stress and energy ----
 
 TEST(GprStress, IsotropicIsZero)
 {
@@ -379,11 +379,8 @@ TEST(GprStress, SimpleShear)
     }
 }
 
-TEST(GprStress, WaveSpeeds)
+TEST(GprStrain, Tau1FromViscosity)
 {
-    EXPECT_DOUBLE_EQ(waveSpeed(4.0, 3.0, 0.0), std::sqrt(4.0 + 12.0));
-    EXPECT_DOUBLE_EQ(waveSpeed(4.0, 0.0, 5.0), 3.0);
-    EXPECT_DOUBLE_EQ(heatWaveSpeed2(2.0, 1.0, 0.5, 2.5), 4.0 * 0.5 / 2.5);
     EXPECT_DOUBLE_EQ(tau1FromViscosity(1e-2, 1.0, 5.0), 6.0 * 1e-2 / 25.0);
 }
 
