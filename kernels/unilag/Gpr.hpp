@@ -419,15 +419,6 @@ KOKKOS_INLINE_FUNCTION double vonMises(const Sym3& sigma)
     return kmath::sqrt(1.5 * norm2(dev(sigma)));
 }
 
-/*! \brief Power-law plastic relaxation time tau1 = tau10 (sigmaY / sigma_bar)^n (docs/gpr-model.md 1.4). sigma_bar <= 0
- *  (no deviatoric stress) gives +infinity (elastic); an overflow of the power also gives +infinity, not NaN. */
-KOKKOS_INLINE_FUNCTION double plasticTau1(double tau10, double sigmaY, double n, double sigmaBar)
-{
-    if (!(sigmaBar > 0.0))
-        return infinity();
-    return tau10 * kmath::pow(sigmaY / sigmaBar, n);
-}
-
 /*! \brief Relaxation rate k = 6 det(G)^{5/6} / tau1 of dG/dt = -k G dev(G) (docs/gpr-model.md 1.4, source of (1e)).
  *  tau1 = +inf gives 0, tau1 = 0 gives +inf. */
 KOKKOS_INLINE_FUNCTION double strainRelaxationRate(const Sym3& G, double tau1)
