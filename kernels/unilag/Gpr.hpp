@@ -407,7 +407,7 @@ KOKKOS_INLINE_FUNCTION double elasticEnergy(double csh, const Sym3& G)
 // Strain relaxation (docs/gpr-model.md 1.4, 2.4)
 // ------------------------------------------------------------------------------------------------------------
 
-//! \brief Viscous fluid: tau1 = 6 mu / (rho0 csh^2) (docs/gpr-model.md 1.4).
+//! \brief Viscous fluid: tau1 = 6 mu / (rho0 csh^2) (docs/gpr-model.md 1.4), in the scene reader's operation order.
 KOKKOS_INLINE_FUNCTION double tau1FromViscosity(double mu, double rho0, double csh)
 {
     return 6.0 * mu / (rho0 * csh * csh);
@@ -773,16 +773,18 @@ KOKKOS_INLINE_FUNCTION double relaxHeatFactor(double dt, double tau2, double rho
     return 1.0 / (1.0 + dt * rho0 * theta / (tau2 * rho * theta0));
 }
 
-//! \brief Fourier conductivity of the relaxation time: kappa = tau2 alpha^2 theta0 / rho0 (docs/gpr-model.md 1.2).
+/*! \brief Fourier conductivity of the relaxation time: kappa = tau2 alpha^2 theta0 / rho0 (docs/gpr-model.md 1.2).
+ *  Formed as tau2 times the scale alpha^2 theta0 / rho0, the scene reader's operation order, so that the reader
+ *  can call this and keep its bits. */
 KOKKOS_INLINE_FUNCTION double kappaFromTau2(double tau2, double alpha, double theta0, double rho0)
 {
-    return tau2 * alpha * alpha * theta0 / rho0;
+    return tau2 * (alpha * alpha * theta0 / rho0);
 }
 
-//! \brief Inverse of kappaFromTau2: tau2 = kappa rho0 / (alpha^2 theta0) (docs/gpr-model.md 1.2).
+//! \brief Inverse of kappaFromTau2: tau2 = kappa / (alpha^2 theta0 / rho0) (docs/gpr-model.md 1.2), same scale.
 KOKKOS_INLINE_FUNCTION double tau2FromKappa(double kappa, double alpha, double theta0, double rho0)
 {
-    return kappa * rho0 / (alpha * alpha * theta0);
+    return kappa / (alpha * alpha * theta0 / rho0);
 }
 
 } // namespace gpr

@@ -382,6 +382,9 @@ TEST(GprStress, SimpleShear)
 TEST(GprStrain, Tau1FromViscosity)
 {
     EXPECT_DOUBLE_EQ(tau1FromViscosity(1e-2, 1.0, 5.0), 6.0 * 1e-2 / 25.0);
+    // the scene reader's operation order, bit for bit
+    const double mu = 0.0173, rho0 = 1.37, csh = 2.91;
+    EXPECT_EQ(tau1FromViscosity(mu, rho0, csh), 6.0 * mu / (rho0 * csh * csh));
 }
 
 // ---- strain relaxation ----
@@ -652,6 +655,11 @@ TEST(GprHeat, RelaxationFactorLimits)
     const double tau2 = tau2FromKappa(kappa, alpha, th0, rho0);
     EXPECT_NEAR(kappaFromTau2(tau2, alpha, th0, rho0), kappa, 1e-18);
     EXPECT_DOUBLE_EQ(kappaFromTau2(0.3, alpha, th0, rho0), 0.3 * alpha * alpha * th0 / rho0);
+    // the scene reader's operation order, bit for bit: tau2 and kappa through the scale alpha^2 theta0 / rho0
+    // (data for which the textbook orders round differently)
+    const double a = 2.729, t0 = 1.404, r0 = 2.129, scale = a * a * t0 / r0;
+    EXPECT_EQ(kappaFromTau2(0.7889, a, t0, r0), 0.7889 * scale);
+    EXPECT_EQ(tau2FromKappa(0.7889, a, t0, r0), 0.7889 / scale);
 }
 
 // ---- device-callability ----
