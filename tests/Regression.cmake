@@ -107,7 +107,7 @@ else()
   message(WARNING "pvpython not found: the ParaView read-back test is skipped (scripts/setup.sh installs python3-paraview)")
 endif()
 
-# GPR hydrodynamic limit (issue 3): the full model with tau1 = 1e-14 (G_e, Picard loop, exact relaxation, stress in
+# GPR hydrodynamic limit: the full model with tau1 = 1e-14 (G_e, Picard loop, exact relaxation, stress in
 # the nodal solver) reproduces the Euler solver's 2D Sedov to 1e-6 in every field. Output only at the end, so that
 # no intermediate output time clips the steps (the c_sh = 1e-6 signal speed differs from c0 by ~1e-10 relative).
 add_test(NAME hydro_limit_euler COMMAND ${UNILAG} run ${INPUTS}/sedov2d.yaml --quiet --set mesh.size=0.0288
@@ -143,7 +143,8 @@ add_test(NAME picard_cap_diagnosis COMMAND bash ${SCRIPTS}/expect_unstable.sh ${
          -- ${UNILAG} run ${SCENES}/traction_wave.yaml --quiet --set scheme.picard_max_iterations=2 --set time.max_retries=3)
 set_tests_properties(picard_cap_diagnosis PROPERTIES LABELS "gpr;regression" PASS_REGULAR_EXPRESSION "Picard loop did not converge in 2 iterations(.|\n)*expect_unstable: PASS")
 
-# Full GPR model (gpr.md 3.4-3.9). The exact-solution code of the two convergence scripts checks itself first.
+# Full GPR model (docs/gpr-model.md 3.4-3.9). The exact-solution code of the two convergence scripts checks itself
+# first.
 add_test(NAME exact_solutions_selftest COMMAND bash -c
          "${PYTHON} ${SCRIPTS}/viscous_shock.py --selftest && ${PYTHON} ${SCRIPTS}/heat_conduction.py --selftest")
 # Mach-2 viscous shock (mu = 2e-2, Pr = 3/4): L1(density) against the Becker profile decreases over three meshes.

@@ -1,6 +1,7 @@
 // Copper square projectile (1 cm side) resting on an aluminium plate (4 cm x 1 cm), in metres, for the
-// multi-material plastic impact (gpr.md 3.7). The two surfaces share the interface segment y = 0, |x| <= 5 mm
-// (conformal mesh: the interface nodes belong to both materials). The mesh size comes from the scene (mesh.size).
+// multi-material plastic impact (docs/gpr-model.md 3.7). The two surfaces share the interface segment y = 0,
+// |x| <= 5 mm (conformal mesh: the interface nodes belong to both materials). The mesh size comes from the scene
+// (mesh.size).
 a = 0.005;   // projectile half width
 w = 0.02;    // plate half width
 t = 0.01;    // plate thickness

@@ -1,5 +1,5 @@
-// Beryllium plate [-3, 3] x [-0.5, 0.5] cm (elastic vibration, gpr.md 3.9), in metres. The mesh size comes from
-// the scene (mesh.size); the rectangle is meshed transfinitely (structured, alternating diagonals) so the mesh is
+// Beryllium plate [-3, 3] x [-0.5, 0.5] cm (elastic vibration, docs/gpr-model.md 3.9), in metres. The mesh size comes
+// from the scene (mesh.size); the rectangle is meshed transfinitely (structured, alternating diagonals) so the mesh is
 // symmetric about both axes.
 Point(1) = {-0.03, -0.005, 0};
 Point(2) = {0.03, -0.005, 0};

@@ -1,5 +1,5 @@
-// Quarter of a cylindrical beryllium shell, 8 cm <= r <= 10 cm (Howell & Ball collapse, gpr.md 3.6), in metres.
-// The mesh size comes from the scene (mesh.size).
+// Quarter of a cylindrical beryllium shell, 8 cm <= r <= 10 cm (Howell & Ball collapse, docs/gpr-model.md 3.6), in
+// metres. The mesh size comes from the scene (mesh.size).
 r0 = 0.08;
 r1 = 0.10;
 Point(1) = {0, 0, 0};

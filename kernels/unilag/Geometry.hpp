@@ -1,7 +1,7 @@
 /*! \file Geometry.hpp
  *  \brief Simplex geometry: volumes, corner vectors c_ri = d|T_i|/dx_r, characteristic lengths.
  *
- *  Conventions (gpr.md 2.1): a cell is a simplex with NV = D+1 nodes, positively oriented. The corner vector
+ *  Conventions (docs/gpr-model.md 2.1): a cell is a simplex with NV = D+1 nodes, positively oriented. The corner vector
  *  of local node k is c_k = d|T|/dx_k = -(1/D) s_k n_k, where s_k n_k is the outward area vector of the face
  *  opposite node k. Hence sum_k c_k = 0, (1/D) sum_k c_k . x_k = |T|, and the face opposite k has outward
  *  area vector -D c_k. Face k of a cell always means "the face opposite local node k".

@@ -1,9 +1,9 @@
 /*! \file Gpr.hpp
  *  \brief Point-wise physics of the Godunov-Peshkov-Romenski (GPR) model: symmetric 3x3 tensors with a Jacobi
  *  eigen-solver, the three equations of state, the elastic stress and energy, the strain (G_e) and heat (J)
- *  relaxation sources, the plastic relaxation time and the signal speeds.
+ *  relaxation sources and the plastic relaxation.
  *
- *  Section numbers refer to /work/shared/reference/gpr.md (digest of Boscheri, Chiocchetti & Peshkov, JCP 2022).
+ *  Section numbers cite docs/gpr-model.md, the model and scheme of Boscheri, Chiocchetti & Peshkov (JCP 2022).
  *  Everything is header-only and device-callable (Kokkos core only, Kokkos math functions, no std:: math).
  *  G_e is always a full 3x3 tensor, also in 2D (plane strain keeps G_zz).
  */
@@ -72,13 +72,13 @@ KOKKOS_INLINE_FUNCTION double trace(const Sym3& a)
 }
 
 /*! \brief det A by cofactors (relative accuracy ~eps lambda_max^3/|det|; det G_e = (rho/rho0)^2 without
- *  relaxation, gpr.md 1.1). */
+ *  relaxation, docs/gpr-model.md 1.1). */
 KOKKOS_INLINE_FUNCTION double det(const Sym3& a)
 {
     return a.xx * (a.yy * a.zz - a.yz * a.yz) - a.xy * (a.xy * a.zz - a.yz * a.xz) + a.xz * (a.xy * a.yz - a.yy * a.xz);
 }
 
-/*! \brief Deviator dev A = A - tr(A)/3 I (gpr.md 1.2). The diagonal is formed as (2 a - b - c)/3 so that an
+/*! \brief Deviator dev A = A - tr(A)/3 I (docs/gpr-model.md 1.2). The diagonal is formed as (2 a - b - c)/3 so that an
  *  isotropic tensor has an exactly zero deviator. */
 KOKKOS_INLINE_FUNCTION Sym3 dev(const Sym3& a)
 {
@@ -123,7 +123,7 @@ KOKKOS_INLINE_FUNCTION Sym3 square(const Sym3& a)
     return symProduct(a, a);
 }
 
-/*! \brief Transport rate G L + L^T G of the G_e equation (gpr.md 1.1 (1e), 2.2 (2e)); L(i, j) = dv_i/dx_j
+/*! \brief Transport rate G L + L^T G of the G_e equation (docs/gpr-model.md 1.1 (1e), 2.2 (2e)); L(i, j) = dv_i/dx_j
  *  (in 2D pass L with a zero third row and column). */
 KOKKOS_INLINE_FUNCTION Sym3 transportRate(const Sym3& g, const Mat<3>& L)
 {
@@ -235,15 +235,15 @@ KOKKOS_INLINE_FUNCTION Sym3 fromEigen(const Eigen3& e)
 }
 
 // ------------------------------------------------------------------------------------------------------------
-// Equations of state, eps(rho, p) (gpr.md 1.3)
+// Equations of state, eps(rho, p) (docs/gpr-model.md 1.3)
 // ------------------------------------------------------------------------------------------------------------
 
 /*! \brief EOS parameters (plain data, usable in kernels). Only the fields of the chosen type are read:
  *   - IdealGas:     gamma, cv
  *   - MieGruneisen: rho0, c0, Gamma0, s, cv
  *   - NeoHookean:   rho0, csh (modulus G = rho0 csh^2), cv
- *  The neo-Hookean modulus uses the EOS's own csh: gpr.md uses the shear speed (bulk modulus K0 = G then); to
- *  impose another small-strain bulk modulus K, set csh = sqrt(K / rho0) here. */
+ *  The neo-Hookean modulus uses the EOS's own csh: docs/gpr-model.md 1.3 uses the shear speed (bulk modulus
+ *  K0 = G then); to impose another small-strain bulk modulus K, set csh = sqrt(K / rho0) here. */
 struct EosParams
 {
     static constexpr int IdealGas = 0;
@@ -254,17 +254,17 @@ struct EosParams
     double gamma, cv, rho0, c0, Gamma0, s, csh;
 };
 
-//! \brief Ideal-gas parameters (gpr.md 1.3).
+//! \brief Ideal-gas parameters (docs/gpr-model.md 1.3).
 KOKKOS_INLINE_FUNCTION EosParams idealGasEos(double gamma, double cv)
 {
     return EosParams{EosParams::IdealGas, gamma, cv, 0.0, 0.0, 0.0, 0.0, 0.0};
 }
-//! \brief Mie-Grueneisen parameters (gpr.md 1.3).
+//! \brief Mie-Grueneisen parameters (docs/gpr-model.md 1.3).
 KOKKOS_INLINE_FUNCTION EosParams mieGruneisenEos(double rho0, double c0, double Gamma0, double s, double cv)
 {
     return EosParams{EosParams::MieGruneisen, 0.0, cv, rho0, c0, Gamma0, s, 0.0};
 }
-//! \brief Neo-Hookean parameters, modulus rho0 csh^2 (gpr.md 1.3).
+//! \brief Neo-Hookean parameters, modulus rho0 csh^2 (docs/gpr-model.md 1.3).
 KOKKOS_INLINE_FUNCTION EosParams neoHookeanEos(double rho0, double csh, double cv)
 {
     return EosParams{EosParams::NeoHookean, 0.0, cv, rho0, 0.0, 0.0, 0.0, csh};
@@ -273,7 +273,7 @@ KOKKOS_INLINE_FUNCTION EosParams neoHookeanEos(double rho0, double csh, double c
 namespace detail
 {
 /*! Mie-Grueneisen reference curve f(eta) = (eta-1)(eta - Gamma0/2 (eta-1)) / (eta - s(eta-1))^2 and its
- *  derivative df/deta, eta = rho/rho0 (gpr.md 1.3). Valid for eta < s/(s-1) (denominator > 0). */
+ *  derivative df/deta, eta = rho/rho0 (docs/gpr-model.md 1.3). Valid for eta < s/(s-1) (denominator > 0). */
 KOKKOS_INLINE_FUNCTION void mgCurve(const EosParams& e, double eta, double& f, double& df)
 {
     const double x = eta - 1.0;
@@ -294,14 +294,14 @@ KOKKOS_INLINE_FUNCTION void nhStrain(const EosParams& e, double rho, double& J, 
 }
 } // namespace detail
 
-/*! \brief Pressure p(rho, eps) (gpr.md 1.3).
+/*! \brief Pressure p(rho, eps) (docs/gpr-model.md 1.3).
  *   - ideal gas: p = (gamma - 1) rho eps;
  *   - Mie-Grueneisen: p = rho0 c0^2 f(eta) + rho0 Gamma0 eps, eta = rho/rho0;
  *   - neo-Hookean (barotropic, eps ignored): p = -(G/2)(J - 1 + ln(J)/J) with J = rho0/rho.
  *
- *  Neo-Hookean sign/variable: gpr.md writes p = -(G/2)(eta - 1 + ln(eta)/eta) and
- *  eps = G/(4 rho0)((eta-1)^2 + (ln eta)^2). With eta = rho/rho0 that p is NEGATIVE in compression (eta > 1) and
- *  is not rho^2 d eps/d rho. Read with the slides' variable as the volume ratio J = det F = rho0/rho = 1/eta,
+ *  Neo-Hookean sign/variable: written in eta = rho/rho0, p = -(G/2)(eta - 1 + ln(eta)/eta) and
+ *  eps = G/(4 rho0)((eta-1)^2 + (ln eta)^2) would give a NEGATIVE p in compression (eta > 1), and p would not be
+ *  rho^2 d eps/d rho. In the volume ratio J = det F = rho0/rho = 1/eta (docs/gpr-model.md 1.3),
  *  both formulas are exactly consistent: p = rho^2 d eps/d rho = -rho0 d eps/dJ, p > 0 in compression (J < 1),
  *  p(rho0) = 0, dp/drho = (csh^2/2)(J^2 + 1 - ln J) > 0 for every J > 0 (since ln J <= J - 1 < J^2 + 1). So the
  *  slip is the variable, not the sign; a bare sign flip would agree only to first order in the strain. */
@@ -327,7 +327,7 @@ KOKKOS_INLINE_FUNCTION double pressure(const EosParams& e, double rho, double ep
     }
 }
 
-/*! \brief Specific internal energy eps(rho, p), the inverse of pressure() in eps (gpr.md 1.3).
+/*! \brief Specific internal energy eps(rho, p), the inverse of pressure() in eps (docs/gpr-model.md 1.3).
  *  Neo-Hookean is barotropic: the result is eps(rho) = (csh^2/4)((J-1)^2 + (ln J)^2), J = rho0/rho, whatever p. */
 KOKKOS_INLINE_FUNCTION double internalEnergy(const EosParams& e, double rho, double p)
 {
@@ -350,7 +350,7 @@ KOKKOS_INLINE_FUNCTION double internalEnergy(const EosParams& e, double rho, dou
     }
 }
 
-/*! \brief Squared bulk sound speed c0^2 = dp/drho|_s = dp/drho|_eps + (p/rho^2) dp/deps|_rho (gpr.md 1.3),
+/*! \brief Squared bulk sound speed c0^2 = dp/drho|_s = dp/drho|_eps + (p/rho^2) dp/deps|_rho (docs/gpr-model.md 1.3),
  *  analytic:
  *   - ideal gas: gamma p / rho;
  *   - Mie-Grueneisen: c0^2 f'(eta) + p Gamma0 rho0 / rho^2 (equals c0^2 at eta = 1, p = 0);
@@ -376,9 +376,9 @@ KOKKOS_INLINE_FUNCTION double soundSpeed2(const EosParams& e, double rho, double
     }
 }
 
-/*! \brief Temperature theta(rho, eps) = eps / cv for every EOS (gpr.md 1.2). Exact for the ideal gas; for the
- *  solids the temperature law is UNCONFIRMED in gpr.md and eps/cv is a documented choice (heat conduction is
- *  only exercised with the ideal gas). */
+/*! \brief Temperature theta(rho, eps) = eps / cv for every EOS (docs/gpr-model.md 1.2). Exact for the ideal gas; for
+ *  the solids the paper gives no temperature law and eps/cv is our choice (heat conduction is only exercised with the
+ *  ideal gas). */
 KOKKOS_INLINE_FUNCTION double temperature(const EosParams& e, double rho, double eps)
 {
     (void)rho;
@@ -386,60 +386,40 @@ KOKKOS_INLINE_FUNCTION double temperature(const EosParams& e, double rho, double
 }
 
 // ------------------------------------------------------------------------------------------------------------
-// Elasticity (gpr.md 1.2) and signal speeds (gpr.md 1.5)
+// Elasticity (docs/gpr-model.md 1.2). The signal speed (1.5) is formed in computeEos (Hydro.hpp), the heat
+// speed in Heat.hpp: each with its own operation order, which the results are bitwise tied to.
 // ------------------------------------------------------------------------------------------------------------
 
-/*! \brief Shear (elastic) stress sigma = -rho csh^2 G dev(G) (gpr.md 1.2). G and dev G commute, so G dev G is
- *  symmetric; it is formed as the symmetric product. Its trace is not zero (it scales like |dev G|^2). */
+/*! \brief Shear (elastic) stress sigma = -rho csh^2 G dev(G) (docs/gpr-model.md 1.2). G and dev G commute, so G dev G
+ *  is symmetric; it is formed as the symmetric product. Its trace is not zero (it scales like |dev G|^2). */
 KOKKOS_INLINE_FUNCTION Sym3 shearStress(double rho, double csh, const Sym3& G)
 {
     return (-rho * csh * csh) * symProduct(G, dev(G));
 }
 
-//! \brief Elastic specific energy E_e = (csh^2/4) |dev G|^2 (gpr.md 1.2).
+//! \brief Elastic specific energy E_e = (csh^2/4) |dev G|^2 (docs/gpr-model.md 1.2).
 KOKKOS_INLINE_FUNCTION double elasticEnergy(double csh, const Sym3& G)
 {
     return 0.25 * csh * csh * norm2(dev(G));
 }
 
-//! \brief Heat-wave speed squared c_h^2 = (alpha^2 / rho0^2)(theta / cv) (gpr.md 1.2).
-KOKKOS_INLINE_FUNCTION double heatWaveSpeed2(double alpha, double rho0, double theta, double cv)
-{
-    return alpha * alpha / (rho0 * rho0) * (theta / cv);
-}
-
-//! \brief Per-cell signal speed a = sqrt(c0^2 + 4/3 csh^2 + ch^2) (gpr.md 1.5); pass ch2 = 0 without heat.
-KOKKOS_INLINE_FUNCTION double waveSpeed(double c02, double csh, double ch2)
-{
-    return kmath::sqrt(c02 + (4.0 / 3.0) * csh * csh + ch2);
-}
-
 // ------------------------------------------------------------------------------------------------------------
-// Strain relaxation (gpr.md 1.4, 2.4)
+// Strain relaxation (docs/gpr-model.md 1.4, 2.4)
 // ------------------------------------------------------------------------------------------------------------
 
-//! \brief Viscous fluid: tau1 = 6 mu / (rho0 csh^2) (gpr.md 1.4).
+//! \brief Viscous fluid: tau1 = 6 mu / (rho0 csh^2) (docs/gpr-model.md 1.4), in the scene reader's operation order.
 KOKKOS_INLINE_FUNCTION double tau1FromViscosity(double mu, double rho0, double csh)
 {
     return 6.0 * mu / (rho0 * csh * csh);
 }
 
-//! \brief Von Mises equivalent stress sigma_bar = sqrt(3/2 tr(dev(sigma)^2)) (gpr.md 1.4).
+//! \brief Von Mises equivalent stress sigma_bar = sqrt(3/2 tr(dev(sigma)^2)) (docs/gpr-model.md 1.4).
 KOKKOS_INLINE_FUNCTION double vonMises(const Sym3& sigma)
 {
     return kmath::sqrt(1.5 * norm2(dev(sigma)));
 }
 
-/*! \brief Power-law plastic relaxation time tau1 = tau10 (sigmaY / sigma_bar)^n (gpr.md 1.4). sigma_bar <= 0
- *  (no deviatoric stress) gives +infinity (elastic); an overflow of the power also gives +infinity, not NaN. */
-KOKKOS_INLINE_FUNCTION double plasticTau1(double tau10, double sigmaY, double n, double sigmaBar)
-{
-    if (!(sigmaBar > 0.0))
-        return infinity();
-    return tau10 * kmath::pow(sigmaY / sigmaBar, n);
-}
-
-/*! \brief Relaxation rate k = 6 det(G)^{5/6} / tau1 of dG/dt = -k G dev(G) (gpr.md 1.4, source of (1e)).
+/*! \brief Relaxation rate k = 6 det(G)^{5/6} / tau1 of dG/dt = -k G dev(G) (docs/gpr-model.md 1.4, source of (1e)).
  *  tau1 = +inf gives 0, tau1 = 0 gives +inf. */
 KOKKOS_INLINE_FUNCTION double strainRelaxationRate(const Sym3& G, double tau1)
 {
@@ -470,7 +450,7 @@ KOKKOS_INLINE_FUNCTION double relaxQuadrature(const double (&rho)[3], const doub
 } // namespace detail
 
 /*! \brief Exact solution over one step of the strain-relaxation ODE dG/dt = -k G dev(G) with frozen k
- *  (gpr.md 1.4 "useful fact", 2.4 step 2); kdt = k dt >= 0.
+ *  (docs/gpr-model.md 1.4, 2.4); kdt = k dt >= 0.
  *
  *  Method (derived here, exact up to a quadrature of ~1e-13 accuracy). With m = tr(G)/3,
  *    d(G^{-1})/dt = -G^{-1} G' G^{-1} = k (I - m G^{-1}),
@@ -587,7 +567,7 @@ KOKKOS_INLINE_FUNCTION Sym3 relaxStrainKdt(const Sym3& G, double kdt)
     return G + fromEigen(dl, e.vector);
 }
 
-/*! \brief Strain relaxation of G_e over dt with frozen tau1 (gpr.md 1.4, 2.4): exact solution of
+/*! \brief Strain relaxation of G_e over dt with frozen tau1 (docs/gpr-model.md 1.4, 2.4): exact solution of
  *  dG/dt = -k G dev(G), k = 6 det(G)^{5/6} / tau1 (relaxStrainKdt). Robust for any tau1 and dt:
  *  tau1 = +inf (elastic) returns G bit-for-bit, tau1 -> 0 (or 0) gives det(G)^{1/3} I, and det G is preserved
  *  to round-off in between. For a plastic tau1(sigma_bar), freeze tau1 at the current iterate. */
@@ -597,12 +577,12 @@ KOKKOS_INLINE_FUNCTION Sym3 relaxStrain(const Sym3& G, double dt, double tau1)
 }
 
 /*! \brief G_e over one step of dG/dt = -(G L + L^T G) - k G dev G with a fixed tau1, given the transport increment
- *  dT = -dt (G L + L^T G) at G0 (gpr.md 2.4; "exponential in the eigenbasis").
+ *  dT = -dt (G L + L^T G) at G0 (docs/gpr-model.md 2.4: the exponential integrator).
  *
  *  Splitting (transport, then the exact relaxation over dt) loses the Navier-Stokes limit: for k dt >> 1 it relaxes
  *  away the deviator that the stretching rebuilds during the step, so the viscous stress vanishes instead of
- *  tending to -(tau1/3) dev D rho c_sh^2 (gpr.md 2.4 asymptotics). Near equilibrium G = g (I + X) the deviator obeys
- *  X' = -a X + F, a = k g, F = dev(dT)/(g dt), whose exact (exponential) solution is
+ *  tending to -(tau1/3) dev D rho c_sh^2 (docs/gpr-model.md 1.4, Navier-Stokes limit). Near equilibrium G = g (I + X)
+ *  the deviator obeys X' = -a X + F, a = k g, F = dev(dT)/(g dt), whose exact (exponential) solution is
  *  X(dt) = e^{-a dt} X0 + phi1(a dt) dt F, phi1(z) = (1 - e^{-z}) / z. Hence
  *    G = R(G0 + tr(dT)/3 I, k dt) + phi1(k g dt) dev(dT),
  *  with R the exact det-preserving relaxation (relaxStrainKdt): the volumetric transport is never relaxed, the
@@ -622,7 +602,7 @@ KOKKOS_INLINE_FUNCTION Sym3 transportAndRelax(const Sym3& G0, const Sym3& dT, do
     return relaxStrainKdt(Gi, kdt) + phi1 * dev(dT);
 }
 
-/*! \brief Plastic strain relaxation over dt with tau1 consistent with the relaxed state (gpr.md 1.4, 2.4):
+/*! \brief Plastic strain relaxation over dt with tau1 consistent with the relaxed state (docs/gpr-model.md 1.4, 2.4):
  *  G = R(G*, kdt), kdt = dt 6 det(G*)^{5/6} / tau1(sigma_bar(rho, G)), tau1 = tau10 (sigma_Y / sigma_bar)^n, where R
  *  is the exact relaxation of relaxStrainKdt. Freezing tau1 at a previous iterate instead makes a Picard loop flip
  *  between over- and under-relaxation for large n (sigma_bar crosses sigma_Y each time).
@@ -779,11 +759,11 @@ KOKKOS_INLINE_FUNCTION Sym3 relaxPlasticStrain(const Sym3& Gs, double rho, doubl
 }
 
 // ------------------------------------------------------------------------------------------------------------
-// Heat conduction (gpr.md 1.2, 1.4, 2.3)
+// Heat conduction (docs/gpr-model.md 1.2, 1.4, 2.3)
 // ------------------------------------------------------------------------------------------------------------
 
 /*! \brief Implicit heat-relaxation factor: J^{n+1} = relaxHeatFactor(...) J*, i.e.
- *  1 / (1 + dt rho0 theta / (tau2 rho theta0)) (gpr.md 2.3), theta frozen at t^n and rho at t^{n+1}.
+ *  1 / (1 + dt rho0 theta / (tau2 rho theta0)) (docs/gpr-model.md 2.3), theta frozen at t^n and rho at t^{n+1}.
  *  tau2 -> 0 gives 0 (Fourier limit), tau2 = +inf gives 1; dt <= 0 gives 1. */
 KOKKOS_INLINE_FUNCTION double relaxHeatFactor(double dt, double tau2, double rho, double rho0, double theta,
                                               double theta0)
@@ -793,16 +773,18 @@ KOKKOS_INLINE_FUNCTION double relaxHeatFactor(double dt, double tau2, double rho
     return 1.0 / (1.0 + dt * rho0 * theta / (tau2 * rho * theta0));
 }
 
-//! \brief Fourier conductivity of the relaxation time: kappa = tau2 alpha^2 theta0 / rho0 (gpr.md 1.2).
+/*! \brief Fourier conductivity of the relaxation time: kappa = tau2 alpha^2 theta0 / rho0 (docs/gpr-model.md 1.2).
+ *  Formed as tau2 times the scale alpha^2 theta0 / rho0, the scene reader's operation order, so that the reader
+ *  can call this and keep its bits. */
 KOKKOS_INLINE_FUNCTION double kappaFromTau2(double tau2, double alpha, double theta0, double rho0)
 {
-    return tau2 * alpha * alpha * theta0 / rho0;
+    return tau2 * (alpha * alpha * theta0 / rho0);
 }
 
-//! \brief Inverse of kappaFromTau2: tau2 = kappa rho0 / (alpha^2 theta0) (gpr.md 1.2).
+//! \brief Inverse of kappaFromTau2: tau2 = kappa / (alpha^2 theta0 / rho0) (docs/gpr-model.md 1.2), same scale.
 KOKKOS_INLINE_FUNCTION double tau2FromKappa(double kappa, double alpha, double theta0, double rho0)
 {
-    return kappa * rho0 / (alpha * alpha * theta0);
+    return kappa / (alpha * alpha * theta0 / rho0);
 }
 
 } // namespace gpr

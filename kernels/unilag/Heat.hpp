@@ -1,18 +1,20 @@
 /*! \file Heat.hpp
- *  \brief Explicit Rusanov heat-conduction fluxes of the GPR model at t^n (gpr.md 2.3): the conduction rates of
- *  the total energy and of the thermal impulse J of every owned cell.
+ *  \brief Explicit Rusanov heat-conduction fluxes of the GPR model at t^n (docs/gpr-model.md 2.3): the conduction rates
+ *  of the total energy and of the thermal impulse J of every owned cell.
  *
  *  With m_i dE_i/dt = -sum_f (q.n)_f s_f and m_i dJ_i/dt = -sum_f (theta I . n)_f s_f over the NV faces of cell i,
  *  the face fluxes between cell i and the cell j across the face (n the unit normal out of i, s_f the face area)
  *  are, first order (cell values on both sides):
  *     (q.n)_f         = 1/2 (q_i + q_j) . n      - 1/2 lambda_f rho_f (eps_j - eps_i)
  *     (theta I . n)_f = 1/2 (theta_i + theta_j) n - 1/2 lambda_f rho_f (J_j - J_i)
- *  with the heat flux q = alpha^2 theta J (gpr.md 1.2), lambda_f = max(c_h,i, c_h,j), rho_f = (rho_i + rho_j)/2.
- *  Documented choices (they differ from the letter of the digest):
- *   - c_h = (alpha / rho) sqrt(theta / cv): the speed of the heat subsystem with the LOCAL density. gpr.md 1.2
- *     writes rho0, which underestimates the speed where rho < rho0 and makes the explicit scheme unstable there.
+ *  with the heat flux q = alpha^2 theta J (docs/gpr-model.md 1.2), lambda_f = max(c_h,i, c_h,j),
+ *  rho_f = (rho_i + rho_j)/2.
+ *  Documented choices (they differ from the paper's fluxes, docs/gpr-model.md 2.3):
+ *   - c_h = (alpha / rho) sqrt(theta / cv): the speed of the heat subsystem with the LOCAL density. The paper
+ *     writes rho0 (docs/gpr-model.md 1.2), which underestimates the speed where rho < rho0 and makes the explicit
+ *     scheme unstable there.
  *     Only c_h enters lambda_f: the Rusanov viscosity of the heat subsystem, not the full signal speed a_i.
- *   - The energy flux dissipates the jump of the specific INTERNAL energy eps, not of E as on the slide, so that
+ *   - The energy flux dissipates the jump of the specific INTERNAL energy eps, not of E as in the paper, so that
  *     jumps of kinetic and elastic energy are not diffused by heat conduction; the factor rho_f makes the units
  *     those of the conserved quantity rho E (and rho J in the J flux).
  *   - Materials with heat == 0 neither conduct nor receive: their rates are zero, and a face between a

@@ -4,7 +4,7 @@
  *  with the GCL volume. Every kernel is a template on the Physics variant (Physics.hpp): the hydrodynamic one
  *  compiles to the Euler solver, with no stress, G_e or J work.
  *
- *  Equation numbers refer to gpr.md section 2 (Boscheri, Chiocchetti & Peshkov, JCP 2022):
+ *  Equation numbers are those of docs/gpr-model.md section 2 (Boscheri, Chiocchetti & Peshkov, JCP 2022):
  *   - subcell matrix  M_ir = z_i sum_{f in F_ri} (s_f/D) n_f n_f = z_i sum_{j != k} c_j c_j^T / |c_j|
  *   - nodal solve     M_r v_r = sum_i (M_ir v_i - T_i c_ri)                  (2.2)
  *   - subcell force   f_ri = T_i c_ri + M_ir (v_r - v_i)
@@ -28,8 +28,9 @@
 namespace unilag
 {
 
-/*! \brief Specific internal energy eps = E - |v|^2/2 - E_e(G) - alpha^2 |J|^2 / 2 (gpr.md 1.2) of a state row whose
- *  velocity, G_e and J are given (the energy is split the same way everywhere, so the total is what is conserved). */
+/*! \brief Specific internal energy eps = E - |v|^2/2 - E_e(G) - alpha^2 |J|^2 / 2 (docs/gpr-model.md 1.2) of a state
+ *  row whose velocity, G_e and J are given (the energy is split the same way everywhere, so the total is what is
+ *  conserved). */
 template <int D, class P>
 KOKKOS_INLINE_FUNCTION double internalEnergy(const Material& m, double energy, const Vec<D>& v, const gpr::Sym3& G,
                                              const Vec<D>& J)
@@ -389,8 +390,8 @@ struct PicardCheck
     LO badCell;            //!< a cell whose volume or G_e became inadmissible (-1 if none)
 };
 
-/*! \brief One Picard iteration of the implicit G_e update (gpr.md 2.4) for owned cells, from the node velocities
- *  of the last nodal solve: positions x^{l+1} (xNew), rho^{l+1} = m / |T(x^{l+1})|, the velocity gradient
+/*! \brief One Picard iteration of the implicit G_e update (docs/gpr-model.md 2.4) for owned cells, from the node
+ *  velocities of the last nodal solve: positions x^{l+1} (xNew), rho^{l+1} = m / |T(x^{l+1})|, the velocity gradient
  *  L = (1/|T^n|) sum_r v_r (x) c_r^n, the transport increment dT = -dt (G^n L + L^T G^n) (explicit in G^n), the
  *  stiff relaxation over dt (transportAndRelax: exponential, with the Navier-Stokes limit; the plastic law relaxes
  *  G^n + dT with tau1 consistent with the result, relaxPlasticStrain), and sigma^{l+1} = sigma(rho^{l+1}, G^{l+1}).
@@ -499,7 +500,7 @@ struct CellFlux
  *   - strain: T = -p I + sigma with sigma the stress of the last nodal solve (`stress`, so that the forces at a
  *     node balance exactly); G^{n+1} is already in stateNew (strainUpdate) and is not touched here.
  *   - heat: E gains dt/m heatRate(i, 0); J^{n+1} = (J^n + dt/m heatRate(i, 1..D)) / (1 + dt rho0 theta^n /
- *     (tau2 rho^{n+1} theta0)) (gpr.md 2.3: explicit fluxes, implicit relaxation).
+ *     (tau2 rho^{n+1} theta0)) (docs/gpr-model.md 2.3: explicit fluxes, implicit relaxation).
  *  If geomNew is given, the geometry of the new positions is stored there for owned cells. */
 template <int D, class P = PhysicsHydro>
 UpdateCheck updateCells(const MeshView<D>& mesh, const ConstField& state, const ConstField& aux,

@@ -2,8 +2,8 @@
  *  \brief What the kernels are compiled for: the physics variant of a scene, the material data, the column
  *  layouts of the cell state and of the derived (auxiliary) cell quantities, and the boundary tables.
  *
- *  A scene pays only for what it uses (gpr.md 1; issue 3 item 5): the kernels are templates on a Physics tag,
- *  chosen once per run from the materials,
+ *  A scene pays only for what it uses (docs/gpr-model.md 1): the kernels are templates on a Physics tag, chosen once
+ *  per run from the materials,
  *   - strain:  some material has shear stiffness (c_sh > 0): the state carries G_e, the nodal solver the stress
  *              sigma, and the Picard loop iterates it;
  *   - plastic: some material relaxes G_e with the power law tau1(sigma_bar);
@@ -48,7 +48,7 @@ using HydroState = StateLayout<D, PhysicsHydro>;
 struct Aux
 {
     static constexpr int pressure = 0;  //!< EOS pressure p(rho, eps)
-    static constexpr int sound = 1;     //!< signal speed a = sqrt(c0^2 + 4/3 c_sh^2 + c_h^2) (gpr.md 1.5)
+    static constexpr int sound = 1;     //!< signal speed a = sqrt(c0^2 + 4/3 c_sh^2 + c_h^2) (docs/gpr-model.md 1.5)
     static constexpr int impedance = 2; //!< z = rho a
     static constexpr int eps = 3;       //!< specific internal energy eps = E - kinetic - elastic - thermal
     static constexpr int theta = 4;     //!< temperature (heat only; 0 otherwise)
@@ -70,7 +70,7 @@ enum StrainLaw : int
 //! Material parameters (plain data, one entry per material, read inside kernels).
 struct Material
 {
-    gpr::EosParams eos;          //!< gpr.md 1.3
+    gpr::EosParams eos;          //!< docs/gpr-model.md 1.3
     double csh = 0.0;            //!< shear sound speed c_sh
     double rho0 = 1.0;           //!< reference density: G_e = (rho/rho0)^{2/3} I at rest; heat relaxation
     int strainLaw = StrainNone;  //!< StrainLaw

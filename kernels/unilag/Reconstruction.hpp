@@ -1,7 +1,7 @@
 /*! \file Reconstruction.hpp
- *  \brief Second order in space (gpr.md 2.5): a limited linear reconstruction w_i(x) = w_i + phi_i grad w_i . (x - x_i)
- *  of the velocity, the pressure and (strain variants) the shear stress of each cell, which the nodal solver and the
- *  subcell forces evaluate at the nodes x_r instead of the cell values.
+ *  \brief Second order in space (docs/gpr-model.md 2.5): a limited linear reconstruction
+ *  w_i(x) = w_i + phi_i grad w_i . (x - x_i) of the velocity, the pressure and (strain variants) the shear stress of
+ *  each cell, which the nodal solver and the subcell forces evaluate at the nodes x_r instead of the cell values.
  *   - Gradient: weighted least squares over the node-neighbour stencil (every cell that shares a node with cell i,
  *     weights 1/|x_j - x_i|^2, a face neighbour counted once per shared node). The stencil is local for every owned
  *     cell (DistributedMesh's ghost layer); ghost cells receive their gradients by one halo exchange.
@@ -10,17 +10,15 @@
  *     Without it the second-order Kidder shell (polar mesh) jets where its outer surface meets a symmetry plane
  *     (outer boundary radii 0.4895-0.5104 at 12k cells, with it 0.4972-0.5013), and 2D Sedov (8.4k cells) has
  *     L1(density) 0.033 instead of 0.030.
- *   - Limiter: Barth-Jespersen at the vertices, per component, with the extrema over the cell and its face
- *     neighbours, so that the reconstructed node values stay within those cell values (no new extrema, first order
- *     at shocks). Wider bounds were measured to be too weak (8.4k-cell 2D Sedov, 3.6k-cell Kidder quarter):
- *       - extrema over the whole node-neighbour stencil: Sedov L1(density) 0.084 against 0.037 at first order, with
- *         mesh-scale noise behind the shock; the Kidder shell tangles from its pressure-driven outer surface;
- *       - per-vertex extrema over the cells around each vertex (Kuzmin's vertex-based limiter, which keeps linear
- *         fields exact inside the mesh): Sedov 0.050, Kidder tangles as well (at CFL 0.5 and 0.1 alike);
- *       - face-neighbour extrema: Sedov 0.033, Kidder runs through (inner radius -4.2%, against -6.7% at first order).
- *     The price: linear fields are clipped at many vertices (most of them in 3D), so smooth regions are reconstructed
- *     at less than full second order; the Be shell's inner radius error at 1 mm is 2.2%, against 1.3% with
- *     node-neighbour bounds and 7.4% at first order.
+ *   - Limiter (scene key scheme.limiter; measurements in the README, "Limiter"): Barth-Jespersen at the vertices,
+ *     per component, in two bounded forms.
+ *       - BarthJespersen (the default): the extrema over the cell and its face neighbours bound every vertex value
+ *         (no new extrema, first order at shocks: the sharpest 2D Sedov shock). The price: linear fields are clipped
+ *         at many vertices (most of them in 3D), so smooth regions get less than full second order.
+ *       - VertexBased: the extrema over every cell around the vertex bound it as well (after Kuzmin), which keeps
+ *         linear fields whole in cells without a boundary vertex: the choice for smooth and elastic flows (the plate).
+ *     Limiter::None skips the limiter (shock-free flows only). Bounds over the whole node-neighbour stencil were
+ *     measured and not kept: too weak at the 2D Sedov shock, and the viscous 3D Sedov tangles.
  *  Sums run over the node -> corner CSR, sorted by global cell id: results are independent of the partition and the
  *  thread count, bit for bit.
  */
@@ -165,8 +163,8 @@ enum class Limiter
     VertexBased
 };
 
-/*! \brief Limited gradients of the owned cells (gpr.md 2.5) into grad (cells x ReconLayout::ncomp), from the cell
- *  values of all local cells (state and aux current for ghosts too, stress: the shear stress, strain variants) on
+/*! \brief Limited gradients of the owned cells (docs/gpr-model.md 2.5) into grad (cells x ReconLayout::ncomp), from the
+ *  cell values of all local cells (state and aux current for ghosts too, stress: the shear stress, strain variants) on
  *  the configuration x with geometry geom (centroids of all local cells). Limiter::None gives the plain
  *  least-squares gradients (exact for linear fields). Which limiter for which flow: README, Limiter.
  *  With bc given, slip walls and symmetry planes mirror the cell (file comment), and an imposed boundary pressure is

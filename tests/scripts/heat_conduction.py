@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Heat conduction in a gas at rest (gpr.md 3.5) against the Fourier solution, on three meshes: the L1 error of the
-temperature must decrease with the mesh size, and every run must conserve (--check).
+"""Heat conduction in a gas at rest (docs/gpr-model.md 3.5) against the Fourier solution, on three meshes: the L1 error
+of the temperature must decrease with the mesh size, and every run must conserve (--check).
 
 Scene (inputs/heat_conduction2d.yaml): ideal gas gamma = 1.4, cv = 2.5 (R = 1), uniform p = 1, temperature step
 theta = 1.01 | 0.99 at x = 0 on [-0.5, 0.5], adiabatic walls, kappa = 0.02, alpha = 2, theta0 = 1.

@@ -3,8 +3,8 @@
 of the full annulus (3k, 12k, 48k cells), at second order (the scene's scheme) and at first order:
   - second order: inner (exact 0.45) and outer (exact 0.5) radii within 1% on every mesh, inner error order >= 1.2;
   - first order: inner error order >= 0.8 (it is several % off: the reference the second order is measured against);
-  - the GPR model in its hydrodynamic limit (tau1 = 1e-14, c_sh = 10; gpr.md 3.2), second order on 12k cells: both
-    radii within 1%, and within 0.1% (of the exact radius) of the Euler run;
+  - the GPR model in its hydrodynamic limit (tau1 = 1e-14, c_sh = 10; docs/gpr-model.md 3.2), second order on 12k cells:
+    both radii within 1%, and within 0.1% (of the exact radius) of the Euler run;
 every run must conserve (--check).
 
 usage: kidder_convergence.py UNILAG SCENE WORKDIR

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Period of the vibrating beryllium plate (gpr.md 3.9, inputs/be_plate2d.yaml) from a run's dumps: the vertical
-velocity at the plate centre (mass average over the cells whose first-dump centroid lies within RADIUS of the
+"""Period of the vibrating beryllium plate (docs/gpr-model.md 3.9, inputs/be_plate2d.yaml) from a run's dumps: the
+vertical velocity at the plate centre (mass average over the cells whose first-dump centroid lies within RADIUS of the
 origin) against time, its zero crossings interpolated linearly, the period = 2 x the mean spacing of consecutive
 crossings. Passes iff |period - EXPECTED_PERIOD| <= TOL * EXPECTED_PERIOD (and at least 3 crossings were found).
 EXPECTED_PERIOD comes from tests/scripts/plate_reference_period.py (28.89e-6 s for the scene's material).

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """Reference period of the first free-free bending mode of the beryllium plate of inputs/be_plate2d.yaml
-(gpr.md 3.9), for plate_period.py's EXPECTED_PERIOD.
+(docs/gpr-model.md 3.9), for plate_period.py's EXPECTED_PERIOD.
 
 The GPR model linearised about the reference state is isotropic linear elasticity with shear modulus
 mu = rho0 c_sh^2 (from E_e = c_sh^2/4 |dev G|^2) and bulk modulus K = rho0 c0^2 (the Mie-Grueneisen EOS, f'(1) = 1);

@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
 """2D Sedov on about 1k, 4k and 16k triangles: L1(density) must decrease with h, and the shock radius on the
-finest mesh must be within 3% of the exact 0.9988 (gpr.md 3.3).
+finest mesh must be within 3% of the exact 0.9988 (docs/gpr-model.md 3.3).
 
 usage: sedov_convergence.py UNILAG SCENE WORKDIR
 """

@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""Beryllium shell collapse (gpr.md 3.6, inputs/be_shell2d*.yaml) against the rigid-plastic final inner radius.
+"""Beryllium shell collapse (docs/gpr-model.md 3.6, inputs/be_shell2d*.yaml) against the rigid-plastic final inner
+radius.
 
 The scheme's numerical dissipation (at first order ~ rho a |grad v|^2 h, a including the shear wave speed) competes
 with the plastic work and stops the shell early, so the final inner radius converges from above. At first order it

@@ -1,7 +1,7 @@
 #!/usr/bin/env python3
 """Strain relaxation across the tau1 range (tests/scenes/tau1_sweep.yaml: a gas with c_sh = 1 in a shearing cellular
 flow, law constant): every run must conserve (--check), and the elastic metric G from the last dump must obey the two
-limits of gpr.md 1.4 / 5.6:
+limits of docs/gpr-model.md 1.4:
 
   tau1 = 1e-14 (ideal fluid): G relaxes to isotropic within each step (the implicit relaxation is exact in the limit):
       max over cells of |dev G|_F / tr G <= ISO_BOUND = 1e-12. The physical deviator is ~ tau1 |grad v| ~ 1e-15; an
@@ -17,10 +17,10 @@ limits of gpr.md 1.4 / 5.6:
   tau1 = 1e-6 (viscous, Navier-Stokes limit; k dt = 6 dt/tau1 ~ 3e4): the first-order Chapman-Enskog balance
       of transport and relaxation, 0 = -(G L + L^T G) - (6/tau1) G dev G with G ~ I, gives
       dev G = -(tau1/3) dev D, D = (L + L^T)/2, i.e. the viscous stress 2 mu dev D with mu = rho0 tau1 c_sh^2/6
-      (gpr.md 1.4; the scheme is asymptotic preserving in this limit, gpr.md 2.4). For the cellular flow
-      D = 0.1 pi cos(pi x) cos(pi y) diag(1, -1, 0) times the flow's current amplitude (it decays, mostly by numerical
-      dissipation: the amplitude is measured by projecting the cell velocities on the initial field). The check
-      projects dev G on -(tau1/3) D: the ratio must be within CE_TOL = 0.15 of 1, the part of dev G off that shape
+      (docs/gpr-model.md 1.4; the scheme is asymptotic preserving in this limit, docs/gpr-model.md 2.4). For the
+      cellular flow D = 0.1 pi cos(pi x) cos(pi y) diag(1, -1, 0) times the flow's current amplitude (it decays, mostly
+      by numerical dissipation: the amplitude is measured by projecting the cell velocities on the initial field). The
+      check projects dev G on -(tau1/3) D: the ratio must be within CE_TOL = 0.15 of 1, the part of dev G off that shape
       below 0.2 of it. (A relaxation that lets dev G decay over the step instead of balancing it against the
       transport gives a ratio ~ 1/(k dt) ~ 0 here: the viscous stress is lost when dt >> tau1.)
   tau1 = 1 (k = 6, rate ~ 0.3): in between; conservation only.

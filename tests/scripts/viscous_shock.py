@@ -1,6 +1,6 @@
 #!/usr/bin/env python3
-"""Viscous Mach-2 shock (gpr.md 3.4, DPRZ16 set-up) against the exact Becker profile, on three meshes: the L1 error
-of the density near the shock must decrease with the mesh size, and every run must conserve (--check).
+"""Viscous Mach-2 shock (docs/gpr-model.md 3.4, DPRZ16 set-up) against the exact Becker profile, on three meshes: the L1
+error of the density near the shock must decrease with the mesh size, and every run must conserve (--check).
 
 Scene (inputs/viscous_shock2d.yaml): ideal gas gamma = 1.4, rho0 = 1, p0 = 1/gamma (c0 = 1), mu = 2e-2, Pr = 3/4;
 the Rankine-Hugoniot jump at x = XJ drives a shock right at Ms c0 = 2 into gas at rest, pushed by a piston at the

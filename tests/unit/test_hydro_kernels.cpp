@@ -2,7 +2,7 @@
 // free-stream preservation (2D and 3D) and conservation of mass, momentum (up to the boundary impulse) and
 // total energy with slip walls, the GCL defect, and the slip-wall constraint on node velocities; the same with the
 // second-order reconstruction (Reconstruction.hpp), whose least-squares gradients are exact for linear fields and
-// whose limited node values stay within the face neighbours' cell values.
+// whose limited node values stay within the face neighbours' cell values; and computeEos's signal speed per material.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -649,4 +649,69 @@ TEST(HydroKernels, ConservationWithOneSlipGroupAroundCorners2D)
 TEST(HydroKernels, ConservationWithOneSlipGroupAroundCorners3D)
 {
     checkConservation<3>(cubeMesh(4, 0.2, 11), 10, true);
+}
+
+/* The signal speed a = sqrt(c0^2 + 4/3 c_sh^2 + c_h^2) and the impedance rho a that computeEos forms
+ * (docs/gpr-model.md 1.5), for each combination of shear and heat conduction: the shear term only with shear, the
+ * heat term only with conduction, and c_h^2 = alpha^2 theta / (cv rho^2) at the local density (rho = 2 rho0 here). */
+TEST(HydroKernels, SignalSpeedPerMaterial)
+{
+    constexpr int D = 2;
+    using P = unilag::Physics<true, false, true>;
+    using S = unilag::StateLayout<D, P>;
+    const double gamma = 1.4, cv = 2.5, csh = 3.0, alpha = 2.0, rho = 2.0, p = 1.5;
+    const double eps = p / ((gamma - 1.0) * rho), g = std::cbrt(rho * rho); // rho0 = 1: G = (rho/rho0)^{2/3} I
+    const double v[D] = {0.3, -0.4};
+    const LO n = 4; // cell i: shear if i & 1, heat if i & 2
+    unilag::View<unilag::Material*> materials("materials", n);
+    unilag::View<int*> cellMaterial("cellMaterial", n);
+    Field state("state", n, S::ncomp), aux("aux", n, unilag::Aux::ncomp<P>()), stress("stress", n, 6);
+    auto mh = Kokkos::create_mirror_view(materials);
+    auto ch = Kokkos::create_mirror_view(cellMaterial);
+    auto sh = Kokkos::create_mirror_view(state);
+    for (LO i = 0; i < n; ++i)
+    {
+        unilag::Material m = unilag::fluidMaterial(unilag::gpr::idealGasEos(gamma, cv));
+        if (i & 1)
+        {
+            m.strainLaw = unilag::StrainConstant;
+            m.csh = csh;
+            m.tau1 = 1.0;
+        }
+        if (i & 2)
+        {
+            m.heat = 1;
+            m.alpha = alpha;
+            m.tau2 = 1.0;
+        }
+        mh(i) = m;
+        ch(i) = i;
+        sh(i, S::omega) = 1.0 / rho;
+        sh(i, S::energy) = eps; // an isotropic G and J = 0 carry no energy
+        for (int d = 0; d < D; ++d)
+        {
+            sh(i, S::vel + d) = v[d];
+            sh(i, S::energy) += 0.5 * v[d] * v[d];
+            sh(i, S::J + d) = 0.0;
+        }
+        for (int c = 0; c < 6; ++c)
+            sh(i, S::G + c) = c < 3 ? g : 0.0;
+    }
+    Kokkos::deep_copy(materials, mh);
+    Kokkos::deep_copy(cellMaterial, ch);
+    Kokkos::deep_copy(state, sh);
+    unilag::computeEos<D, P>(state, cellMaterial, materials, aux, n, stress);
+    auto ah = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), aux);
+    for (LO i = 0; i < n; ++i)
+    {
+        double a2 = gamma * p / rho;
+        if (i & 1)
+            a2 += 4.0 / 3.0 * csh * csh;
+        if (i & 2)
+            a2 += alpha * alpha * (eps / cv) / (cv * rho * rho);
+        const double a = std::sqrt(a2);
+        EXPECT_NEAR(ah(i, unilag::Aux::pressure), p, 1e-14 * p) << i;
+        EXPECT_NEAR(ah(i, unilag::Aux::sound), a, 1e-14 * a) << i;
+        EXPECT_NEAR(ah(i, unilag::Aux::impedance), rho * a, 1e-14 * rho * a) << i;
+    }
 }

@@ -73,7 +73,7 @@ std::string withMaterial(const std::string& block)
     return replaced(sedovScene(), "    gas: { eos: ideal_gas, gamma: 1.4 }\n", "    gas:\n" + block);
 }
 
-//! A beryllium-like elastoplastic solid (gpr.md 3.6) as the material 'gas'.
+//! A beryllium-like elastoplastic solid (docs/gpr-model.md 3.6) as the material 'gas'.
 const std::string kPlastic = R"(      eos: mie_gruneisen
       rho0: 1845
       c0: 8000
@@ -88,7 +88,7 @@ const std::string kPlastic = R"(      eos: mie_gruneisen
         exponent: 20
 )";
 
-//! An ideal gas with the GPR hydrodynamic limit and heat conduction (gpr.md 3.5) as the material 'gas'.
+//! An ideal gas with the GPR hydrodynamic limit and heat conduction (docs/gpr-model.md 3.5) as the material 'gas'.
 const std::string kHeat = R"(      eos: ideal_gas
       gamma: 1.4
       cv: 2.5
