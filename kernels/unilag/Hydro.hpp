@@ -1,16 +1,16 @@
 /*! \file Hydro.hpp
  *  \brief First-order cell-centred Lagrangian step of the GPR model (T = -p I + sigma): EOS and derived cell
- *  quantities, Maire-type nodal solver with subcell forces, time-step limits, and the conservative cell update
- *  with the GCL volume. Every kernel is a template on the Physics variant (Physics.hpp): the hydrodynamic one
+ *  quantities, Maire-type nodal solver with subcell forces, time-step limits and the G_e update (the conservative
+ *  cell update with the GCL volume is in CellUpdate.hpp). Every kernel is a template on the Physics variant (Physics.hpp): the hydrodynamic one
  *  compiles to the Euler solver, with no stress, G_e or J work.
  *
  *  Equation numbers are those of docs/gpr-model.md section 2 (Boscheri, Chiocchetti & Peshkov, JCP 2022):
  *   - subcell matrix  M_ir = z_i sum_{f in F_ri} (s_f/D) n_f n_f = z_i sum_{j != k} c_j c_j^T / |c_j|
  *   - nodal solve     M_r v_r = sum_i (M_ir v_i - T_i c_ri)                  (2.2)
  *   - subcell force   f_ri = T_i c_ri + M_ir (v_r - v_i)
- *   - cell update     v_i += dt/m_i sum_r f_ri,  E_i += dt/m_i sum_r f_ri . v_r  (2b, 2c)
+ *   - cell update     v_i += dt/m_i sum_r f_ri,  E_i += dt/m_i sum_r f_ri . v_r  (2b, 2c; CellUpdate.hpp)
  *   - GCL             omega_i += dt/m_i sum_r v_r . (c^n + 4 c^{n+1/2} + c^{n+1})/6  (2a, Simpson: exact);
- *                     checked against |T_i^{n+1}| / m_i every step, which is what is stored
+ *                     checked against |T_i^{n+1}| / m_i every step, which is what is stored (CellUpdate.hpp)
  *  Every node sum is a gather over the node -> corner CSR map (no atomics): results are bitwise independent of
  *  the thread count, and, since corners are ordered by global cell id, of the MPI partition.
  *  Second order: v_i, p_i and sigma_i in the nodal solve and the subcell forces become the limited reconstruction
@@ -469,144 +469,6 @@ PicardCheck strainUpdate(const MeshView<D>& mesh, const ConstField& state, const
     minReduce<3>("unilag::gpr::strain_update", mesh.nOwnedCells, update, ext, P::plastic);
     const bool bad = ext[2] < double(mesh.nOwnedCells);
     return PicardCheck{-ext[0], ext[1], bad ? LO(ext[2]) : LO(-1)};
-}
-
-//! Extrema reported by the cell update; a step is accepted only if volumes and squared sound speeds stay positive.
-struct UpdateCheck
-{
-    double minVolumeRatio; //!< min |T^{n+1}| / |T^n|
-    double minSound2;      //!< min squared sound speed of the new states (must stay positive)
-    double maxGclDefect;   //!< max |m omega - |T^{n+1}|| / |T^{n+1}|
-    LO worstCell;          //!< a cell with the smallest volume ratio or internal energy (-1 if none bad)
-};
-
-/*! The state the subcell forces of a step are computed from, if it is not the state being updated: at second order
- *  the midpoint state, its configuration, shear stress and reconstruction (the corrector of the midpoint rule). */
-template <int D>
-struct CellFlux
-{
-    ConstField state;      //!< flux state (velocity)
-    ConstField aux;        //!< its pressure and impedance
-    ConstField stress;     //!< its shear stress (strain variants)
-    CellGeometry geom;     //!< corner vectors of the flux configuration
-    Reconstruction<D> rec; //!< limited gradients on that configuration (inactive: first order)
-};
-
-/*! \brief Conservative update of owned cells from the subcell forces (2b, 2c) and the Simpson GCL (2a),
- *  writing stateNew. Returns the validity extrema.
- *   - forces f_ri = T_i(x_r) c_ri + M_ri (v_r - v_i(x_r)) from the flux state (flux, if given: the midpoint of a
- *     second-order step, with its reconstruction; otherwise state, aux, geom and stress at first order); the
- *     velocities vnode are the nodal solution for that state, and xNew = x + dt vnode.
- *   - strain: T = -p I + sigma with sigma the stress of the last nodal solve (`stress`, so that the forces at a
- *     node balance exactly); G^{n+1} is already in stateNew (strainUpdate) and is not touched here.
- *   - heat: E gains dt/m heatRate(i, 0); J^{n+1} = (J^n + dt/m heatRate(i, 1..D)) / (1 + dt rho0 theta^n /
- *     (tau2 rho^{n+1} theta0)) (docs/gpr-model.md 2.3: explicit fluxes, implicit relaxation).
- *  If geomNew is given, the geometry of the new positions is stored there for owned cells. */
-template <int D, class P = PhysicsHydro>
-UpdateCheck updateCells(const MeshView<D>& mesh, const ConstField& state, const ConstField& aux,
-                        const CellGeometry& geom, const View<const double*>& mass, const View<const int*>& cellMaterial,
-                        const View<const Material*>& materials, const ConstField& x, const ConstField& xNew,
-                        const ConstField& vnode, double dt, const Field& stateNew,
-                        const ConstField& stress = ConstField(), const ConstField& heatRate = ConstField(),
-                        const CellGeometry& geomNew = CellGeometry(), const CellFlux<D>& flux = CellFlux<D>())
-{
-    using S = StateLayout<D, P>;
-    constexpr int NV = D + 1;
-    auto corner = geom.corner;
-    auto volume = geom.volume;
-    const bool storeNew = geomNew.volume.extent(0) > 0;
-    const bool separate = flux.state.extent(0) > 0;
-    const ConstField fState = separate ? flux.state : state;
-    const ConstField fAux = separate ? flux.aux : aux;
-    const ConstField fStress = separate ? flux.stress : stress;
-    const Field fCorner = separate ? flux.geom.corner : geom.corner;
-    const Reconstruction<D> rec = flux.rec;
-    auto update = KOKKOS_LAMBDA(const LO i, double (&ext)[4])
-    {
-        Vec<D> vi;
-        for (int d = 0; d < D; ++d)
-            vi[d] = state(i, S::vel + d);
-        const double z = fAux(i, Aux::impedance);
-        Vec<D> xm[NV], xn[NV], vr[NV];
-        for (int k = 0; k < NV; ++k)
-        {
-            const LO r = mesh.cellNodes(i, k);
-            for (int d = 0; d < D; ++d)
-            {
-                vr[k][d] = vnode(r, d);
-                xn[k][d] = xNew(r, d);
-                xm[k][d] = 0.5 * (x(r, d) + xNew(r, d));
-            }
-        }
-        const Simplex<D> sMid(xm), sNew(xn);
-        if (storeNew)
-            storeGeometry<D>(geomNew, i, sNew); // the next step's geometry of owned cells, at no extra cost
-        Vec<D> force = Vec<D>::zero();
-        double power = 0.0, gclFlux = 0.0;
-        for (int k = 0; k < NV; ++k)
-        {
-            double pk;
-            gpr::Sym3 sk;
-            Vec<D> vk;
-            cornerValues<D, P>(fState, fAux, fStress, rec, i, mesh.cellNodes(i, k), vk, pk, sk);
-            const Vec<D> ck = cornerVec<D>(fCorner, i, k);
-            Vec<D> f = (-pk) * ck + z * (subcellMatrix<D>(fCorner, i, k) * (vr[k] - vk));
-            if constexpr (P::strain)
-                f = f + stressTimes<D>(sk, ck);
-            force = force + f;
-            power += dot(f, vr[k]);
-            gclFlux += dot(vr[k], cornerVec<D>(corner, i, k) + 4.0 * sMid.c[k] + sNew.c[k]);
-        }
-        const double dtm = dt / mass(i);
-        Vec<D> v;
-        for (int d = 0; d < D; ++d)
-        {
-            v[d] = vi[d] + dtm * force[d];
-            stateNew(i, S::vel + d) = v[d];
-        }
-        double E = state(i, S::energy) + dtm * power;
-        const Material& m = materials(cellMaterial(i));
-        // (2a) with Simpson's rule is exact for linear trajectories: the GCL volume must equal the geometric
-        // one up to this step's round-off. Store the geometric one (as the paper's Picard loop does), so that
-        // round-off does not accumulate over the steps, and report the one-step defect.
-        const double omegaGcl = state(i, S::omega) + dtm * gclFlux / 6.0;
-        const double omega = sNew.volume / mass(i);
-        const double rhoNew = 1.0 / omega;
-        gpr::Sym3 G = gpr::identity(1.0);
-        if constexpr (P::strain)
-            G = loadSym3(stateNew, i, S::G);
-        Vec<D> J = Vec<D>::zero();
-        if constexpr (P::heat)
-        {
-            E += dtm * heatRate(i, 0);
-            const double factor =
-                m.heat ? gpr::relaxHeatFactor(dt, m.tau2, rhoNew, m.rho0, aux(i, Aux::theta), m.theta0) : 1.0;
-            for (int d = 0; d < D; ++d)
-            {
-                J[d] = (state(i, S::J + d) + dtm * heatRate(i, 1 + d)) * factor;
-                stateNew(i, S::J + d) = J[d];
-            }
-        }
-        stateNew(i, S::energy) = E;
-        stateNew(i, S::omega) = omega;
-
-        const double ratio = sNew.volume / volume(i);
-        // Admissible state: a positive squared sound speed (for an ideal gas: a positive internal energy).
-        const double eps = internalEnergy<D, P>(m, E, v, G, J);
-        double c2 = gpr::soundSpeed2(m.eos, rhoNew, gpr::pressure(m.eos, rhoNew, eps));
-        if (!(c2 == c2) || !(omega == omega))
-            c2 = -Kokkos::reduction_identity<double>::min(); // NaN: report as the worst possible
-        ext[0] = Kokkos::Experimental::fmin(ext[0], ratio);
-        ext[1] = Kokkos::Experimental::fmin(ext[1], c2);
-        ext[2] = Kokkos::Experimental::fmin(ext[2], -Kokkos::Experimental::fabs(mass(i) * omegaGcl - sNew.volume) /
-                                                         sNew.volume);
-        if (ratio <= 0.0 || c2 <= 0.0)
-            ext[3] = Kokkos::Experimental::fmin(ext[3], double(i));
-    };
-    double ext[4];
-    minReduce<4>("unilag::gpr::update_cells", mesh.nOwnedCells, update, ext);
-    const bool bad = ext[3] < double(mesh.nOwnedCells);
-    return UpdateCheck{ext[0], ext[1], -ext[2], bad ? LO(ext[3]) : LO(-1)};
 }
 
 } // namespace unilag

@@ -11,6 +11,8 @@
 
 #include <Teuchos_YamlParameterListHelpers.hpp>
 
+#include "unilag/Gpr.hpp"
+
 #include "physics/Expression.hpp"
 
 namespace unilag
@@ -23,7 +25,7 @@ using config::ConfigNode;
 using config::num;
 using config::resolvePath;
 
-//! Strain relaxation laws (gpr.md 1.4) and the keys of strain_relaxation each one takes besides 'law'.
+//! Strain relaxation laws (docs/gpr-model.md 1.4) and the keys of strain_relaxation each one takes besides 'law'.
 struct LawKeys
 {
     std::string name;
@@ -36,7 +38,7 @@ const std::vector<LawKeys> kStrainLaws = {{"fluid", RelaxationLaw::Fluid, {}},
                                           {"constant", RelaxationLaw::Constant, {"tau1"}},
                                           {"plastic", RelaxationLaw::Plastic, {"tau10", "yield_stress", "exponent"}}};
 
-/*! \brief strain_relaxation of a material (gpr.md 1.4): the law, its parameters and tau1.
+/*! \brief strain_relaxation of a material (docs/gpr-model.md 1.4): the law, its parameters and tau1.
  *  Needs spec.rho0 and spec.shearSpeed. */
 void readStrainRelaxation(ConfigNode& m, MaterialSpec& spec)
 {
@@ -70,7 +72,7 @@ void readStrainRelaxation(ConfigNode& m, MaterialSpec& spec)
     if (spec.strainLaw == RelaxationLaw::Viscous)
     {
         spec.viscosity = st.positive("viscosity", 0.0, true);
-        spec.tau1 = 6.0 * spec.viscosity / (spec.rho0 * spec.shearSpeed * spec.shearSpeed); // gpr.md 1.4
+        spec.tau1 = gpr::tau1FromViscosity(spec.viscosity, spec.rho0, spec.shearSpeed);
     }
     else if (spec.strainLaw == RelaxationLaw::Elastic)
         spec.tau1 = std::numeric_limits<double>::infinity();
@@ -85,7 +87,7 @@ void readStrainRelaxation(ConfigNode& m, MaterialSpec& spec)
     st.rejectUnknown();
 }
 
-//! heat_conduction of a material (gpr.md 1.2, 1.4): alpha, theta0 and one of kappa, tau2. Needs spec.rho0.
+//! heat_conduction of a material (docs/gpr-model.md 1.2, 1.4): alpha, theta0 and one of kappa, tau2. Needs spec.rho0.
 void readHeatConduction(ConfigNode& m, MaterialSpec& spec)
 {
     spec.heatConduction = m.has("heat_conduction");
@@ -98,17 +100,15 @@ void readHeatConduction(ConfigNode& m, MaterialSpec& spec)
     if (kappa == tau2)
         h.fail("kappa", std::string(kappa ? "given together with 'tau2'" : "missing") +
                             ": give exactly one of 'kappa' (Fourier conductivity) and 'tau2' (relaxation time)");
-    // kappa = tau2 alpha^2 theta0 / rho0 (gpr.md 1.2)
-    const double scale = spec.alpha * spec.alpha * spec.theta0 / spec.rho0;
     if (kappa)
     {
         spec.kappa = h.positive("kappa", 0.0, true);
-        spec.tau2 = spec.kappa / scale;
+        spec.tau2 = gpr::tau2FromKappa(spec.kappa, spec.alpha, spec.theta0, spec.rho0);
     }
     else
     {
         spec.tau2 = h.positive("tau2", 0.0, true);
-        spec.kappa = spec.tau2 * scale;
+        spec.kappa = gpr::kappaFromTau2(spec.tau2, spec.alpha, spec.theta0, spec.rho0);
     }
     if (!(spec.tau2 > 0.0) || !std::isfinite(spec.tau2) || !(spec.kappa > 0.0) || !std::isfinite(spec.kappa))
         h.fail(kappa ? "kappa" : "tau2", "gives kappa = " + num(spec.kappa) + " and tau2 = " + num(spec.tau2) +

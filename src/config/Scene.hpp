@@ -31,7 +31,7 @@ enum class EosKind
     NeoHookean
 };
 
-//! Strain relaxation laws of the scene (gpr.md 1.4); the kernels see StrainNone, StrainConstant or StrainPlastic.
+//! Strain relaxation laws of the scene (docs/gpr-model.md 1.4); the kernels see StrainNone, StrainConstant or StrainPlastic.
 enum class RelaxationLaw
 {
     Fluid,    //!< no shear stress
@@ -65,13 +65,13 @@ enum class ExactSolution
 
 struct MaterialSpec
 {
-    EosKind eos = EosKind::IdealGas; //!< gpr.md 1.3
+    EosKind eos = EosKind::IdealGas; //!< docs/gpr-model.md 1.3
     double gamma = 1.4;             //!< ideal gas
     double cv = 1.0;
     double rho0 = 1.0, c0 = 1.0, Gamma0 = 0.0, s = 0.0; //!< Mie-Grueneisen (rho0 also neo-Hookean)
     double csh = 0.0;                                    //!< neo-Hookean modulus rho0 csh^2
 
-    // GPR constitutive model (gpr.md 1.2, 1.4). rho0 above is also the reference density of G_e (at rest
+    // GPR constitutive model (docs/gpr-model.md 1.2, 1.4). rho0 above is also the reference density of G_e (at rest
     // G_e = (rho/rho0)^{2/3} I) and of the relaxation laws; for an ideal gas it defaults to 1.
     double shearSpeed = 0.0;          //!< c_sh >= 0 (key shear_sound_speed); 0 with law "fluid"
     RelaxationLaw strainLaw = RelaxationLaw::Fluid;

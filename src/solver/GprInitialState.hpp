@@ -72,7 +72,7 @@ std::string regionState(const GprModel<D, P>& md, std::size_t r, const MatV& mat
         sh(i, S::energy) = eps + kin;
         if constexpr (P::strain)
         {
-            // at rest: G_e = (rho / rho0)^{2/3} I, so det G_e = (rho / rho0)^2 (gpr.md 1.1) and sigma = 0
+            // at rest: G_e = (rho / rho0)^{2/3} I, so det G_e = (rho / rho0)^2 (docs/gpr-model.md 1.1) and sigma = 0
             const double g = std::cbrt((rho / mats(mat).rho0) * (rho / mats(mat).rho0));
             for (int k = 0; k < 6; ++k)
                 sh(i, S::G + k) = k < 3 ? g : 0.0;

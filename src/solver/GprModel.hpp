@@ -23,7 +23,7 @@
 #include "core/Timers.hpp"
 #include "physics/Expression.hpp"
 #include "state/FieldSet.hpp"
-#include "unilag/Hydro.hpp"
+#include "unilag/CellUpdate.hpp"
 
 namespace unilag
 {

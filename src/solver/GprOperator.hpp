@@ -14,6 +14,8 @@
 #pragma once
 
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "solver/GprModel.hpp"
 #include "unilag/Heat.hpp"
@@ -163,6 +165,10 @@ class GprOperator
     bool picard(double dt, int& iterations, std::string& failure);
     std::string inadmissible(LO badCell, const std::string& where, double dt);
 
+    // Stored stages, for integrators that combine several (GprStages.hpp).
+    void storeStageRates(const std::string& name);
+    UpdateCheck updateFromStages(double dt, const std::vector<std::pair<std::string, double>>& stages);
+
     // Second order: the corrector's pieces (GprCorrector.hpp).
     void midpointState(double t, double dt);
     bool correctorUpdate(double dt, UpdateCheck& check, std::string& failure);
@@ -177,3 +183,4 @@ class GprOperator
 
 #include "solver/GprCorrector.hpp"
 #include "solver/GprPicard.hpp"
+#include "solver/GprStages.hpp"

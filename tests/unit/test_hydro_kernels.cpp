@@ -12,7 +12,7 @@
 #include <vector>
 
 #include "HostMesh.hpp"
-#include "unilag/Hydro.hpp"
+#include "unilag/CellUpdate.hpp"
 
 namespace
 {
