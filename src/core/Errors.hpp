@@ -1,0 +1,31 @@
+/*! \file Errors.hpp
+ *  \brief The input error and the CLI's exit codes, shared by the scene reader, the mesh loader and the CLI.
+ *
+ *  Kept apart from core/Types.hpp so that the Tpetra typedefs can be included anywhere without bringing a
+ *  second definition of InputError next to the one io/Scene.hpp still has (Scene.hpp is to include this file
+ *  and drop its own; Run.hpp likewise drops its ExitCode).
+ */
+#pragma once
+
+#include <stdexcept>
+
+namespace unilag
+{
+
+//! Bad input: the message names the file and the key (or element); the CLI prints it and exits with 2.
+class InputError : public std::runtime_error
+{
+  public:
+    using std::runtime_error::runtime_error;
+};
+
+//! Exit codes of the CLI.
+enum ExitCode : int
+{
+    ExitOk = 0,
+    ExitInput = 2,    //!< bad scene or mesh
+    ExitCheck = 3,    //!< --check failed
+    ExitUnstable = 4  //!< the run went unstable and was stopped
+};
+
+} // namespace unilag
