@@ -10,23 +10,16 @@
 #include <unordered_map>
 #include <unordered_set>
 
-#include <mpi.h>
-
-#include <Teuchos_DefaultMpiComm.hpp>
 #include <Tpetra_Map_decl.hpp>
 #include <Zoltan2_PartitioningProblem.hpp>
 #include <Zoltan2_XpetraMultiVectorAdapter.hpp>
+
+#include "core/Mpi.hpp"
 
 namespace unilag
 {
 namespace
 {
-
-MPI_Comm rawComm(const Teuchos::RCP<const Comm>& comm)
-{
-    auto mpi = Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(comm);
-    return mpi.is_null() ? MPI_COMM_SELF : (*mpi->getRawMpiComm())();
-}
 
 void broadcastNames(std::vector<std::string>& names, MPI_Comm comm)
 {
@@ -58,20 +51,20 @@ std::shared_ptr<DistributedMesh> DistributedMesh::distribute(const GlobalMesh& r
 {
     auto mesh = std::make_shared<DistributedMesh>();
     mesh->comm = comm;
-    MPI_Comm mpi = rawComm(comm);
+    MPI_Comm raw = mpi::rawComm(comm);
     const int rank = comm->getRank();
     const bool isRoot = rank == 0;
 
     long long header[3] = {root.dim, (long long)root.nCells(), (long long)root.nNodes()};
-    MPI_Bcast(header, 3, MPI_LONG_LONG, 0, mpi);
+    MPI_Bcast(header, 3, MPI_LONG_LONG, 0, raw);
     mesh->dim = int(header[0]);
     mesh->nv = mesh->dim + 1;
     mesh->nGlobalCells = header[1];
     mesh->nGlobalNodes = header[2];
     mesh->regionNames = root.regionNames;
     mesh->boundaryNames = root.boundaryNames;
-    broadcastNames(mesh->regionNames, mpi);
-    broadcastNames(mesh->boundaryNames, mpi);
+    broadcastNames(mesh->regionNames, raw);
+    broadcastNames(mesh->boundaryNames, raw);
     const int nv = mesh->nv, dim = mesh->dim;
 
     // Everything starts on rank 0.
@@ -146,7 +139,7 @@ std::shared_ptr<DistributedMesh> DistributedMesh::distribute(const GlobalMesh& r
 
 void DistributedMesh::buildFromOwnedCells(const OwnedCells& oc, const MV& rootCoords)
 {
-    MPI_Comm mpi = rawComm(comm);
+    MPI_Comm raw = mpi::rawComm(comm);
     const int nranks = comm->getSize();
     const LO nOwn = LO(oc.gid.size());
     cellMap = mapOf(oc.gid, comm);
@@ -194,12 +187,12 @@ void DistributedMesh::buildFromOwnedCells(const OwnedCells& oc, const MV& rootCo
                 }
             }
     }
-    MPI_Alltoall(sendCount.data(), 1, MPI_INT, recvCount.data(), 1, MPI_INT, mpi);
+    MPI_Alltoall(sendCount.data(), 1, MPI_INT, recvCount.data(), 1, MPI_INT, raw);
     for (int p = 0; p < nranks; ++p)
         rdispl[p + 1] = rdispl[p] + recvCount[p];
     std::vector<long long> recvBuf(rdispl[nranks]);
     MPI_Alltoallv(sendBuf.data(), sendCount.data(), sdispl.data(), MPI_LONG_LONG, recvBuf.data(), recvCount.data(),
-                  rdispl.data(), MPI_LONG_LONG, mpi);
+                  rdispl.data(), MPI_LONG_LONG, raw);
 
     // The node owner now holds every cell around its owned nodes (from the records of phase 1). Phase 2: it
     // sends back, to each other rank that touches the node, the cells around the node that rank does not own;
@@ -248,12 +241,12 @@ void DistributedMesh::buildFromOwnedCells(const OwnedCells& oc, const MV& rootCo
     std::vector<long long> send2Buf(s2displ[nranks]);
     for (int p = 0; p < nranks; ++p)
         std::copy(send2[p].begin(), send2[p].end(), send2Buf.begin() + s2displ[p]);
-    MPI_Alltoall(send2Count.data(), 1, MPI_INT, recv2Count.data(), 1, MPI_INT, mpi);
+    MPI_Alltoall(send2Count.data(), 1, MPI_INT, recv2Count.data(), 1, MPI_INT, raw);
     for (int p = 0; p < nranks; ++p)
         r2displ[p + 1] = r2displ[p] + recv2Count[p];
     std::vector<long long> recv2Buf(r2displ[nranks]);
     MPI_Alltoallv(send2Buf.data(), send2Count.data(), s2displ.data(), MPI_LONG_LONG, recv2Buf.data(),
-                  recv2Count.data(), r2displ.data(), MPI_LONG_LONG, mpi);
+                  recv2Count.data(), r2displ.data(), MPI_LONG_LONG, raw);
 
     // Ghosts: the cells of both phases that this rank does not own (records of one cell are identical).
     std::map<GO, const long long*> ghostRecord; // gid -> record
@@ -423,11 +416,7 @@ void DistributedMesh::buildFromOwnedCells(const OwnedCells& oc, const MV& rootCo
     }
 
     // Output numbering: contiguous per rank for owned nodes, imported for the others.
-    long long nOwnedLL = nOwnedNodes;
-    nodeOutputOffset = 0;
-    MPI_Exscan(&nOwnedLL, &nodeOutputOffset, 1, MPI_LONG_LONG, MPI_SUM, mpi);
-    if (comm->getRank() == 0)
-        nodeOutputOffset = 0;
+    nodeOutputOffset = mpi::exclusiveOffset(raw, nOwnedNodes);
     {
         MV ids(nodeMap, 1), idsOv(nodeMapOverlap, 1);
         {

@@ -19,23 +19,14 @@
 #include <string>
 #include <vector>
 
-#include <Teuchos_Comm.hpp>
 #include <Teuchos_RCP.hpp>
-#include <Tpetra_Import.hpp>
-#include <Tpetra_Map.hpp>
-#include <Tpetra_MultiVector.hpp>
 
+#include "core/Types.hpp"
 #include "mesh/GlobalMesh.hpp"
 #include "unilag/Geometry.hpp"
 
 namespace unilag
 {
-
-using Map = Tpetra::Map<LO>;
-using GO = Map::global_ordinal_type;
-using MV = Tpetra::MultiVector<double, LO, GO>;
-using Importer = Tpetra::Import<LO, GO>;
-using Comm = Teuchos::Comm<int>;
 
 class DistributedMesh
 {
