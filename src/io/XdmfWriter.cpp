@@ -10,6 +10,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/Mpi.hpp"
+
 namespace unilag::io {
 namespace {
 
@@ -112,14 +114,6 @@ XdmfWriter::~XdmfWriter() {
   if (!finalized && comm_ != MPI_COMM_NULL) MPI_Comm_free(&comm_);
 }
 
-long long XdmfWriter::exclusiveOffset(MPI_Comm comm, long long nLocal) {
-  long long offset = 0;
-  MPI_Exscan(&nLocal, &offset, 1, MPI_LONG_LONG, MPI_SUM, comm);
-  int rank = 0;
-  MPI_Comm_rank(comm, &rank);
-  return rank == 0 ? 0 : offset;  // MPI leaves rank 0's result undefined
-}
-
 // Input errors must be raised on all ranks together, or the others hang in the next collective.
 void XdmfWriter::throwIfAnyRank(const std::string& localError) const {
   int bad = localError.empty() ? 0 : 1, anyBad = 0;
@@ -139,8 +133,8 @@ void XdmfWriter::setTopology(long long nOwnedNodes, long long nOwnedCells, const
   throwIfAnyRank(badId == connectivity.end() ? "" : "XdmfWriter::setTopology: node id out of range: " + std::to_string(*badId));
   nOwnedNodes_ = nOwnedNodes;
   nOwnedCells_ = nOwnedCells;
-  nodeOffset_ = exclusiveOffset(comm_, nOwnedNodes);
-  cellOffset_ = exclusiveOffset(comm_, nOwnedCells);
+  nodeOffset_ = mpi::exclusiveOffset(comm_, nOwnedNodes);
+  cellOffset_ = mpi::exclusiveOffset(comm_, nOwnedCells);
   nNodes_ = global[0];
   nCells_ = global[1];
   connectivity_ = connectivity;

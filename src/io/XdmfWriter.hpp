@@ -36,14 +36,10 @@ public:
   XdmfWriter(const XdmfWriter&) = delete;
   XdmfWriter& operator=(const XdmfWriter&) = delete;
 
-  /*! \brief Exclusive prefix sum of \p nLocal over the ranks of \p comm (0 on rank 0). Collective.
-   *
-   *  This is the rule for global output ids: rank p owns [exclusiveOffset(comm, nOwned), + nOwned).
-   */
-  static long long exclusiveOffset(MPI_Comm comm, long long nLocal);
-
   /*! \brief Set (or reset after repartitioning) the owned node/cell counts and the owned cells'
    *         connectivity as 0-based global output node ids, (dim+1) per cell, row-major. Collective.
+   *
+   *  Global output ids follow mpi::exclusiveOffset (core/Mpi.hpp): rank p owns [offset, offset + nOwned).
    *  \throws std::invalid_argument on every rank if any rank passed inconsistent input.
    */
   void setTopology(long long nOwnedNodes, long long nOwnedCells, const std::vector<long long>& connectivity);

@@ -1,6 +1,7 @@
 // Standalone MPI test of unilag::io::XdmfWriter: writes a toy triangle mesh and a toy tet mesh over 3 dumps
 // with moving nodes (and a repartition), then reads the HDF5 back on rank 0 and checks shapes and values.
 // Usage: mpirun -np N xdmf_writer_standalone [outdir]   (default outdir: ./xdmf_writer_out)
+#include "core/Mpi.hpp"
 #include "io/XdmfWriter.hpp"
 
 #include <hdf5.h>
@@ -153,8 +154,8 @@ void runMesh(const Mesh& m, const std::string& dir, const std::string& base, con
       n1 = blockBegin(m.nNodes(), rank + 1, size, modes[step]);
       c0 = blockBegin(m.nCells(), rank, size, modes[step]);
       c1 = blockBegin(m.nCells(), rank + 1, size, modes[step]);
-      CHECK(XdmfWriter::exclusiveOffset(MPI_COMM_WORLD, n1 - n0) == n0, "exclusiveOffset(nodes)");
-      CHECK(XdmfWriter::exclusiveOffset(MPI_COMM_WORLD, c1 - c0) == c0, "exclusiveOffset(cells)");
+      CHECK(unilag::mpi::exclusiveOffset(MPI_COMM_WORLD, n1 - n0) == n0, "exclusiveOffset(nodes)");
+      CHECK(unilag::mpi::exclusiveOffset(MPI_COMM_WORLD, c1 - c0) == c0, "exclusiveOffset(cells)");
       w.setTopology(n1 - n0, c1 - c0, std::vector<long long>(m.conn.begin() + nv * c0, m.conn.begin() + nv * c1));
     }
     std::vector<double> coords, rho, vel;
