@@ -6,7 +6,7 @@
 #include <numeric>
 #include <stdexcept>
 #include <string>
-#include <tuple>
+#include <type_traits>
 #include <unordered_map>
 #include <unordered_set>
 
@@ -15,6 +15,7 @@
 #include <Zoltan2_XpetraMultiVectorAdapter.hpp>
 
 #include "core/Mpi.hpp"
+#include "mesh/FaceKey.hpp"
 
 namespace unilag
 {
@@ -302,52 +303,16 @@ void DistributedMesh::buildFromOwnedCells(const OwnedCells& oc, const MV& rootCo
     for (std::size_t q = 0; q < cellNodeGid.size(); ++q)
         cellNodesHost[q] = nodeLid.at(cellNodeGid[q]);
 
-    // Face neighbours: faces (opposite local node k) matched by their sorted node ids.
+    // Face neighbours: faces (opposite local node k) matched by their sorted local node ids.
     {
-        struct FaceRec
-        {
-            std::array<LO, 3> key;
-            LO cell;
-            int k;
-        };
-        std::vector<FaceRec> faces;
-        faces.reserve(cellNodesHost.size());
-        for (LO i = 0; i < nCells; ++i)
-            for (int k = 0; k < nv; ++k)
-            {
-                FaceRec f{{-1, -1, -1}, i, k};
-                int n = 0;
-                for (int j = 0; j < nv; ++j)
-                    if (j != k)
-                        f.key[n++] = cellNodesHost[std::size_t(nv) * i + j];
-                auto order = [&f](int a, int b) {
-                    if (f.key[b] < f.key[a])
-                        std::swap(f.key[a], f.key[b]);
-                };
-                order(0, 1); // 3-entry sorting network; in 2D the third entry stays -1
-                if (n == 3)
-                {
-                    order(1, 2);
-                    order(0, 1);
-                }
-                faces.push_back(f);
-            }
-        std::sort(faces.begin(), faces.end(), [](const FaceRec& a, const FaceRec& b) {
-            return std::tie(a.key, a.cell, a.k) < std::tie(b.key, b.cell, b.k);
-        });
+        static_assert(std::is_same_v<LO, int>, "FaceKey holds local node ids as int");
         cellNeighbourHost.assign(cellNodesHost.size(), -1);
-        for (std::size_t a = 0, b; a < faces.size(); a = b)
-        {
-            for (b = a + 1; b < faces.size() && faces[b].key == faces[a].key;)
-                ++b;
-            if (b - a > 2)
-                throw std::logic_error("DistributedMesh: a face is shared by more than two cells");
-            if (b - a == 2)
-            {
-                cellNeighbourHost[std::size_t(nv) * faces[a].cell + faces[a].k] = faces[a + 1].cell;
-                cellNeighbourHost[std::size_t(nv) * faces[a + 1].cell + faces[a + 1].k] = faces[a].cell;
-            }
-        }
+        auto link = [this](const FaceRef& a, const FaceRef& b) {
+            cellNeighbourHost[std::size_t(nv) * a.cell + a.k] = b.cell;
+            cellNeighbourHost[std::size_t(nv) * b.cell + b.k] = a.cell;
+        };
+        if (matchFaces(cellNodesHost.data(), std::size_t(nCells), nv, link, [](const FaceRef&) {}))
+            throw std::logic_error("DistributedMesh: a face is shared by more than two cells");
         // Owned cells see every face neighbour (the ghost layer holds all cells sharing a node with them), so
         // an owned face has a local neighbour exactly when it is not a boundary face.
         for (LO i = 0; i < nOwnedCells; ++i)
