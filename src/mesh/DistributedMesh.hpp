@@ -10,8 +10,9 @@
  *  nodes of local cells, each part sorted by global id. Node->corner lists are sorted by global cell id, so
  *  every node sum adds the same numbers in the same order on any number of ranks and threads.
  *
- *  The same construction (buildFromOwnedCells) serves a later repartitioning: move the owned cell records with
- *  a Tpetra Import to the new owners, then rebuild ghosts, maps and plans.
+ *  The mesh is built from the owned cell records (CellRecords.hpp), which distribute moves from rank 0 to
+ *  Zoltan2's owners: ghosts, maps, importers, face neighbours and node->corner lists follow from them. The same
+ *  construction serves a later repartitioning: move the owned records to the new owners, then build again.
  */
 #pragma once
 
@@ -22,6 +23,7 @@
 #include <Teuchos_RCP.hpp>
 
 #include "core/Types.hpp"
+#include "mesh/CellRecords.hpp"
 #include "mesh/GlobalMesh.hpp"
 #include "unilag/Geometry.hpp"
 
@@ -80,15 +82,13 @@ class DistributedMesh
     }
 
   private:
-    //! Cell records (region, node gids, face groups) of the cells this rank owns, sorted by gid.
-    struct OwnedCells
-    {
-        std::vector<GO> gid;
-        std::vector<int> region;
-        std::vector<GO> nodes;   //!< nv per cell
-        std::vector<int> groups; //!< nv per cell
-    };
-    void buildFromOwnedCells(const OwnedCells& owned, const MV& rootCoords);
+    void buildFromOwnedCells(const CellRecords& owned, const MV& coords);
+    std::vector<GO> setLocalCells(const CellRecords& owned, const CellRecords& ghosts);
+    void setLocalNodes(const std::vector<GO>& ownedNodes, const std::vector<GO>& cellNodeGid);
+    void findFaceNeighbours();
+    void importCoordinates(const MV& coords);
+    void buildDeviceViews();
+    void numberOutputNodes();
 };
 
 } // namespace unilag
