@@ -1,7 +1,40 @@
 #include "mesh/CellRecords.hpp"
 
+#include <algorithm>
+#include <numeric>
+
+#include <Tpetra_Distributor.hpp>
+
 namespace unilag
 {
+namespace
+{
+
+//! The gids each rank is sent: a Distributor plan from the destinations, gids grouped by destination rank.
+std::vector<GO> receivedGids(const std::vector<GO>& gids, const std::vector<int>& destination,
+                             const Teuchos::RCP<const Comm>& comm)
+{
+    // the plan wants exports grouped by rank (else it copies, or complains with efficiency warnings on)
+    std::vector<std::size_t> order(gids.size());
+    std::iota(order.begin(), order.end(), std::size_t(0));
+    std::stable_sort(order.begin(), order.end(),
+                     [&](std::size_t a, std::size_t b) { return destination[a] < destination[b]; });
+    std::vector<int> toRank(order.size());
+    std::vector<GO> sent(order.size());
+    for (std::size_t q = 0; q < order.size(); ++q)
+    {
+        toRank[q] = destination[order[q]];
+        sent[q] = gids[order[q]];
+    }
+    Tpetra::Distributor plan(comm);
+    const std::size_t nReceived = plan.createFromSends(Teuchos::ArrayView<const int>(toRank));
+    std::vector<GO> received(nReceived);
+    plan.doPostsAndWaits(Teuchos::ArrayView<const GO>(sent), 1, Teuchos::ArrayView<GO>(received));
+    std::sort(received.begin(), received.end());
+    return received;
+}
+
+} // namespace
 
 Teuchos::RCP<const Map> mapOfGids(const std::vector<GO>& gids, const Teuchos::RCP<const Comm>& comm)
 {
@@ -43,6 +76,16 @@ CellRecords readRecordRows(const MV& rows, int nv)
         cells.append(map.getGlobalElement(i), int(r(i, 0)), nodes.data(), groups.data());
     }
     return cells;
+}
+
+CellRecords migrateRecords(const CellRecords& cells, const std::vector<int>& newOwner,
+                           const Teuchos::RCP<const Map>& cellMap)
+{
+    auto newMap = mapOfGids(receivedGids(cells.gid, newOwner, cellMap->getComm()), cellMap->getComm());
+    MV from(cellMap, recordColumns(cells.nv)), to(newMap, recordColumns(cells.nv));
+    writeRecordRows(cells, from);
+    to.doImport(from, Importer(cellMap, newMap), Tpetra::INSERT);
+    return readRecordRows(to, cells.nv);
 }
 
 } // namespace unilag

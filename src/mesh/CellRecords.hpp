@@ -1,6 +1,7 @@
 /*! \file CellRecords.hpp
  *  \brief The records that define a set of cells of the distributed mesh (global id, region, node global ids,
- *  face groups) and how they travel between ranks as rows of a Tpetra MultiVector. A rank's owned records are all DistributedMesh needs to build its part (ghosts come from them too).
+ *  face groups), how they travel between ranks as rows of a Tpetra MultiVector, and their migration to new
+ *  owners. A rank's owned records are all DistributedMesh needs to build its part (ghosts come from them too).
  */
 #pragma once
 
@@ -49,6 +50,11 @@ void writeRecordRows(const CellRecords& cells, MV& rows);
 
 //! The records held as rows of a MultiVector, their gids from its map (which must list them in increasing order).
 CellRecords readRecordRows(const MV& rows, int nv);
+
+/*! \brief Moves each record of cells to rank newOwner[i] with a Tpetra Import; returns the records this rank
+ *  receives, sorted by gid. Collective. \p cellMap is the map of cells' gids (one-to-one over the ranks). */
+CellRecords migrateRecords(const CellRecords& cells, const std::vector<int>& newOwner,
+                           const Teuchos::RCP<const Map>& cellMap);
 
 //! The map of these gids on comm (global size computed).
 Teuchos::RCP<const Map> mapOfGids(const std::vector<GO>& gids, const Teuchos::RCP<const Comm>& comm);

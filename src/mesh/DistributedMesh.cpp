@@ -100,6 +100,27 @@ Teuchos::RCP<const Map> partitionCells(MV& centroids, const Teuchos::RCP<const C
     return mapOfGids(gids, comm);
 }
 
+//! rebuild's input errors, the same on every rank ("" when all is well). Collective.
+std::string rebuildInputError(const DistributedMesh& old, const std::vector<int>& newOwner, const MV& coords)
+{
+    const int nranks = old.comm->getSize();
+    std::string error;
+    if (newOwner.size() != std::size_t(old.nOwnedCells))
+        error = "newOwner has " + std::to_string(newOwner.size()) + " entries for " +
+                std::to_string(old.nOwnedCells) + " owned cells";
+    else if (std::any_of(newOwner.begin(), newOwner.end(), [&](int p) { return p < 0 || p >= nranks; }))
+        error = "newOwner names a rank outside [0, " + std::to_string(nranks) + ")";
+    else if (coords.getNumVectors() != 3)
+        error = "coords has " + std::to_string(coords.getNumVectors()) + " columns, not 3";
+    // isSameAs is collective: every rank asks both
+    const bool onOwned = coords.getMap()->isSameAs(*old.nodeMap);
+    const bool onOverlap = coords.getMap()->isSameAs(*old.nodeMapOverlap);
+    if (error.empty() && !onOwned && !onOverlap)
+        error = "coords is on neither the old nodeMap nor nodeMapOverlap";
+    error = mpi::firstMessage(mpi::rawComm(old.comm), error);
+    return error.empty() ? error : "DistributedMesh::rebuild: " + error;
+}
+
 } // namespace
 
 std::shared_ptr<DistributedMesh> DistributedMesh::distribute(const GlobalMesh& root, Teuchos::RCP<const Comm> comm)
@@ -124,6 +145,43 @@ std::shared_ptr<DistributedMesh> DistributedMesh::distribute(const GlobalMesh& r
     mine.doImport(records, Importer(rootCells, owned), Tpetra::INSERT);
     mesh->buildFromOwnedCells(readRecordRows(mine, mesh->nv), coords);
     return mesh;
+}
+
+std::shared_ptr<DistributedMesh> DistributedMesh::rebuild(const DistributedMesh& old, const std::vector<int>& newOwner,
+                                                          const MV& coords)
+{
+    const std::string error = rebuildInputError(old, newOwner, coords);
+    if (!error.empty())
+        throw std::invalid_argument(error);
+    auto mesh = std::make_shared<DistributedMesh>();
+    mesh->comm = old.comm;
+    mesh->dim = old.dim;
+    mesh->nv = old.nv;
+    mesh->nGlobalCells = old.nGlobalCells;
+    mesh->nGlobalNodes = old.nGlobalNodes;
+    mesh->regionNames = old.regionNames;
+    mesh->boundaryNames = old.boundaryNames;
+
+    const CellRecords moved = migrateRecords(old.ownedRecords(), newOwner, old.cellMap);
+    // the owned rows come first in nodeMapOverlap, so its first nOwnedNodes rows are a vector on nodeMap
+    auto ownedCoords = coords.getMap()->isSameAs(*old.nodeMap) ? Teuchos::rcpFromRef(coords)
+                                                               : coords.offsetView(old.nodeMap, 0);
+    mesh->buildFromOwnedCells(moved, *ownedCoords);
+    return mesh;
+}
+
+CellRecords DistributedMesh::ownedRecords() const
+{
+    CellRecords owned;
+    owned.nv = nv;
+    std::vector<GO> nodes(nv);
+    for (LO i = 0; i < nOwnedCells; ++i)
+    {
+        for (int k = 0; k < nv; ++k)
+            nodes[k] = nodeGid[cellNodesHost[std::size_t(nv) * i + k]];
+        owned.append(cellGid[i], cellRegion[i], nodes.data(), &cellFaceGroupHost[std::size_t(nv) * i]);
+    }
+    return owned;
 }
 
 void DistributedMesh::buildFromOwnedCells(const CellRecords& owned, const MV& coords)

@@ -10,9 +10,9 @@
  *  nodes of local cells, each part sorted by global id. Node->corner lists are sorted by global cell id, so
  *  every node sum adds the same numbers in the same order on any number of ranks and threads.
  *
- *  The mesh is built from the owned cell records (CellRecords.hpp), which distribute moves from rank 0 to
- *  Zoltan2's owners: ghosts, maps, importers, face neighbours and node->corner lists follow from them. The same
- *  construction serves a later repartitioning: move the owned records to the new owners, then build again.
+ *  distribute() and rebuild() share one construction from the owned cell records (CellRecords.hpp): distribute
+ *  moves them from rank 0 to Zoltan2's owners, rebuild from the current owners to new ones (repartitioning a
+ *  moving mesh); then ghosts, maps, importers, face neighbours and node->corner lists follow from them.
  */
 #pragma once
 
@@ -37,6 +37,18 @@ class DistributedMesh
      *  Collective. */
     static std::shared_ptr<DistributedMesh> distribute(const GlobalMesh& root, Teuchos::RCP<const Comm> comm);
 
+    /*! \brief The same mesh with its cells owned by new ranks, for repartitioning a moving mesh. Collective.
+     *  \param old the mesh as it is distributed now
+     *  \param newOwner for each owned cell of old (local index < old.nOwnedCells), the rank to own it next
+     *  \param coords current node coordinates, 3 columns, on old.nodeMap or old.nodeMapOverlap (owned rows read)
+     *  The owned cell records move to their new ranks with a Tpetra Import; the new mesh is then built exactly as
+     *  distribute builds one, with coords0 = coords. Global cell and node ids are kept, so the caller moves its
+     *  fields with Import(old.cellMap, mesh->cellMap) and Import(old.nodeMap, mesh->nodeMap). With every cell
+     *  staying on its rank the result equals old: same maps, local numbering, corner lists and output ids.
+     *  \throws std::invalid_argument on every rank if any rank passed a wrong size, rank or map. */
+    static std::shared_ptr<DistributedMesh> rebuild(const DistributedMesh& old, const std::vector<int>& newOwner,
+                                                    const MV& coords);
+
     int dim = 0, nv = 0;
     Teuchos::RCP<const Comm> comm;
     Teuchos::RCP<const Map> cellMap, cellMapOverlap, nodeMap, nodeMapOverlap;
@@ -53,7 +65,7 @@ class DistributedMesh
     std::vector<LO> cellNodesHost;   //!< nv per cell
     std::vector<int> cellFaceGroupHost; //!< nv per cell
     std::vector<LO> cellNeighbourHost;  //!< nv per cell: local cell across face k, -1 if none is local
-    std::vector<double> coords0;     //!< initial node coordinates, 3 per local node
+    std::vector<double> coords0;     //!< node coordinates when built (mesh file or rebuild's), 3 per local node
 
     // Device views for the kernels.
     Kokkos::View<LO**, Kokkos::LayoutLeft, MemSpace> cellNodes;
@@ -89,6 +101,7 @@ class DistributedMesh
     void importCoordinates(const MV& coords);
     void buildDeviceViews();
     void numberOutputNodes();
+    CellRecords ownedRecords() const;
 };
 
 } // namespace unilag
