@@ -286,24 +286,29 @@ void DistributedMesh::importCoordinates(const MV& coords)
             coords0[3 * n + d] = xh(n, d);
 }
 
-//! Device copies of the cell tables, and the node -> corner CSR with corners sorted by (global cell id, local node).
-void DistributedMesh::buildDeviceViews()
+/*! The node -> corner CSR (corner q = nv * cell + local node), each node's corners sorted by (global cell id,
+ *  local node): node sums then add in the same order on any number of ranks. */
+void DistributedMesh::nodeCornerLists(std::vector<LO>& offsets, std::vector<LO>& corners) const
 {
-    std::vector<LO> offsets(nNodes + 1, 0);
+    offsets.assign(nNodes + 1, 0);
     for (LO q = 0; q < LO(cellNodesHost.size()); ++q)
         ++offsets[cellNodesHost[q] + 1];
     std::partial_sum(offsets.begin(), offsets.end(), offsets.begin());
-    std::vector<LO> corners(cellNodesHost.size());
-    {
-        std::vector<LO> pos(offsets.begin(), offsets.end() - 1);
-        for (LO q = 0; q < LO(cellNodesHost.size()); ++q)
-            corners[pos[cellNodesHost[q]]++] = q;
-        for (LO n = 0; n < nNodes; ++n)
-            std::sort(corners.begin() + offsets[n], corners.begin() + offsets[n + 1], [&](LO a, LO b) {
-                return std::make_pair(cellGid[a / nv], a % nv) < std::make_pair(cellGid[b / nv], b % nv);
-            });
-    }
+    corners.resize(cellNodesHost.size());
+    std::vector<LO> pos(offsets.begin(), offsets.end() - 1);
+    for (LO q = 0; q < LO(cellNodesHost.size()); ++q)
+        corners[pos[cellNodesHost[q]]++] = q;
+    for (LO n = 0; n < nNodes; ++n)
+        std::sort(corners.begin() + offsets[n], corners.begin() + offsets[n + 1], [&](LO a, LO b) {
+            return std::make_pair(cellGid[a / nv], a % nv) < std::make_pair(cellGid[b / nv], b % nv);
+        });
+}
 
+//! Device copies of the cell tables and of the node -> corner lists.
+void DistributedMesh::buildDeviceViews()
+{
+    std::vector<LO> offsets, corners;
+    nodeCornerLists(offsets, corners);
     cellNodes = Kokkos::View<LO**, Kokkos::LayoutLeft, MemSpace>("unilag::cellNodes", nCells, nv);
     cellFaceGroup = View<int**>("unilag::cellFaceGroup", nCells, nv);
     cellNeighbour = View<LO**>("unilag::cellNeighbour", nCells, nv);

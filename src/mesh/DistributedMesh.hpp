@@ -99,6 +99,7 @@ class DistributedMesh
     void setLocalNodes(const std::vector<GO>& ownedNodes, const std::vector<GO>& cellNodeGid);
     void findFaceNeighbours();
     void importCoordinates(const MV& coords);
+    void nodeCornerLists(std::vector<LO>& offsets, std::vector<LO>& corners) const;
     void buildDeviceViews();
     void numberOutputNodes();
     CellRecords ownedRecords() const;
