@@ -44,7 +44,7 @@
 #include "mesh/DistributedMesh.hpp"
 #include "mesh/GlobalMesh.hpp"
 #include "unilag/Heat.hpp"
-#include "unilag/Hydro.hpp"
+#include "unilag/CellUpdate.hpp"
 
 namespace
 {

@@ -1,6 +1,6 @@
 /*! \file Types.hpp
  *  \brief The Tpetra typedefs every layer above the kernels shares. Kernels never include this file (they stay
- *  Kokkos-only).
+ *  Kokkos-only); the input error and exit codes are in core/Errors.hpp.
  */
 #pragma once
 

@@ -10,6 +10,8 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/Mpi.hpp"
+
 namespace unilag::io {
 namespace {
 
@@ -96,11 +98,38 @@ std::string dataItem(long long rows, int cols, const char* numberType, const std
   return s.str();
 }
 
+const char* topologyName(CellType type) {
+  switch (type) {
+    case CellType::Triangle: return "Triangle";
+    case CellType::Tetrahedron: return "Tetrahedron";
+    case CellType::Polyline: return "Polyline";
+  }
+  throw std::invalid_argument("XdmfWriter: unknown cell type");
+}
+
+const char* attributeType(int ncomp) { return ncomp == 1 ? "Scalar" : ncomp == 3 ? "Vector" : "Tensor6"; }
+
 }  // namespace
 
+int nodesPerCell(CellType type) {
+  switch (type) {
+    case CellType::Triangle: return 3;
+    case CellType::Tetrahedron: return 4;
+    case CellType::Polyline: return 2;
+  }
+  throw std::invalid_argument("XdmfWriter: unknown cell type");
+}
+
+CellType simplexCellType(int dim) {
+  if (dim != 2 && dim != 3) throw std::invalid_argument("XdmfWriter: dim must be 2 or 3");
+  return dim == 2 ? CellType::Triangle : CellType::Tetrahedron;
+}
+
 XdmfWriter::XdmfWriter(MPI_Comm comm, std::string dir, std::string basename, int dim)
-    : dir_(std::move(dir)), base_(std::move(basename)), dim_(dim) {
-  if (dim_ != 2 && dim_ != 3) throw std::invalid_argument("XdmfWriter: dim must be 2 or 3");
+    : XdmfWriter(comm, std::move(dir), std::move(basename), simplexCellType(dim)) {}
+
+XdmfWriter::XdmfWriter(MPI_Comm comm, std::string dir, std::string basename, CellType cellType)
+    : dir_(std::move(dir)), base_(std::move(basename)), cellType_(cellType), nodesPerCell_(nodesPerCell(cellType)) {
   if (!isSafeName(base_)) throw std::invalid_argument("XdmfWriter: invalid basename '" + base_ + "'");
   if (MPI_Comm_dup(comm, &comm_) != MPI_SUCCESS) throw std::runtime_error("XdmfWriter: MPI_Comm_dup failed");
   MPI_Comm_rank(comm_, &rank_);
@@ -110,14 +139,6 @@ XdmfWriter::~XdmfWriter() {
   int finalized = 0;
   MPI_Finalized(&finalized);
   if (!finalized && comm_ != MPI_COMM_NULL) MPI_Comm_free(&comm_);
-}
-
-long long XdmfWriter::exclusiveOffset(MPI_Comm comm, long long nLocal) {
-  long long offset = 0;
-  MPI_Exscan(&nLocal, &offset, 1, MPI_LONG_LONG, MPI_SUM, comm);
-  int rank = 0;
-  MPI_Comm_rank(comm, &rank);
-  return rank == 0 ? 0 : offset;  // MPI leaves rank 0's result undefined
 }
 
 // Input errors must be raised on all ranks together, or the others hang in the next collective.
@@ -130,8 +151,8 @@ void XdmfWriter::throwIfAnyRank(const std::string& localError) const {
 void XdmfWriter::setTopology(long long nOwnedNodes, long long nOwnedCells, const std::vector<long long>& connectivity) {
   std::string err;
   if (nOwnedNodes < 0 || nOwnedCells < 0) err = "XdmfWriter::setTopology: negative count";
-  else if (connectivity.size() != static_cast<size_t>(nOwnedCells) * (dim_ + 1))
-    err = "XdmfWriter::setTopology: connectivity size != nOwnedCells * (dim+1)";
+  else if (connectivity.size() != static_cast<size_t>(nOwnedCells) * nodesPerCell_)
+    err = "XdmfWriter::setTopology: connectivity size != nOwnedCells * nodes per cell";
   throwIfAnyRank(err);
   long long local[2] = {nOwnedNodes, nOwnedCells}, global[2] = {0, 0};
   MPI_Allreduce(local, global, 2, MPI_LONG_LONG, MPI_SUM, comm_);
@@ -139,8 +160,8 @@ void XdmfWriter::setTopology(long long nOwnedNodes, long long nOwnedCells, const
   throwIfAnyRank(badId == connectivity.end() ? "" : "XdmfWriter::setTopology: node id out of range: " + std::to_string(*badId));
   nOwnedNodes_ = nOwnedNodes;
   nOwnedCells_ = nOwnedCells;
-  nodeOffset_ = exclusiveOffset(comm_, nOwnedNodes);
-  cellOffset_ = exclusiveOffset(comm_, nOwnedCells);
+  nodeOffset_ = mpi::exclusiveOffset(comm_, nOwnedNodes);
+  cellOffset_ = mpi::exclusiveOffset(comm_, nOwnedCells);
   nNodes_ = global[0];
   nCells_ = global[1];
   connectivity_ = connectivity;
@@ -155,20 +176,35 @@ std::string XdmfWriter::stepName(int index) const {
 
 std::string XdmfWriter::collectionPath() const { return dir_ + "/" + base_ + ".xmf"; }
 
-std::string XdmfWriter::writeStep(int index, double time, const std::vector<double>& coords,
-                                  const std::vector<CellField>& fields) {
-  if (!haveTopology_) throw std::logic_error("XdmfWriter::writeStep: setTopology() was not called");
+std::vector<XdmfWriter::Dataset> XdmfWriter::datasetsOf(const std::vector<CellField>& cellFields,
+                                                         const std::vector<NodeField>& nodeFields) {
+  std::vector<Dataset> all;
+  for (const CellField& f : cellFields) all.push_back({f.name, f.ncomp, f.data, false});
+  for (const NodeField& f : nodeFields) all.push_back({f.name, f.ncomp, f.data, true});
+  return all;
+}
+
+// This rank's first input error, or "".
+std::string XdmfWriter::checkStepInput(int index, const std::vector<double>& coords, const std::vector<Dataset>& fields) const {
   std::string err;
   std::set<std::string> names = {"coordinates", "connectivity"};
   if (index < 0) err = "XdmfWriter::writeStep: negative index";
   else if (coords.size() != static_cast<size_t>(nOwnedNodes_) * 3) err = "XdmfWriter::writeStep: coords size != nOwnedNodes * 3";
-  for (const CellField& f : fields) {
+  for (const Dataset& f : fields) {
+    if (!err.empty()) break;
     if (!isSafeName(f.name) || !names.insert(f.name).second) err = "XdmfWriter::writeStep: invalid or duplicate field name '" + f.name + "'";
     else if (f.ncomp != 1 && f.ncomp != 3 && f.ncomp != 6)
       err = "XdmfWriter::writeStep: field '" + f.name + "' must have ncomp 1, 3 or 6";
-    else if (!f.data && nOwnedCells_ > 0) err = "XdmfWriter::writeStep: field '" + f.name + "' has no data";
+    else if (!f.data && (f.onNodes ? nOwnedNodes_ : nOwnedCells_) > 0) err = "XdmfWriter::writeStep: field '" + f.name + "' has no data";
   }
-  throwIfAnyRank(err);
+  return err;
+}
+
+std::string XdmfWriter::writeStep(int index, double time, const std::vector<double>& coords,
+                                  const std::vector<CellField>& cellFields, const std::vector<NodeField>& nodeFields) {
+  if (!haveTopology_) throw std::logic_error("XdmfWriter::writeStep: setTopology() was not called");
+  const std::vector<Dataset> fields = datasetsOf(cellFields, nodeFields);
+  throwIfAnyRank(checkStepInput(index, coords, fields));
 
   const std::string h5Name = stepName(index) + ".h5", h5Path = dir_ + "/" + h5Name;
   H5Handle fapl(H5Pcreate(H5P_FILE_ACCESS), H5Pclose, "H5Pcreate(fapl) for " + h5Path);
@@ -177,9 +213,13 @@ std::string XdmfWriter::writeStep(int index, double time, const std::vector<doub
   fapl.close("fapl of " + h5Path);
   writeRows(file, h5Path, "coordinates", H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE, coords.data(), nNodes_, nodeOffset_, nOwnedNodes_, 3);
   writeRows(file, h5Path, "connectivity", H5T_NATIVE_LLONG, H5T_STD_I64LE, connectivity_.data(), nCells_, cellOffset_,
-            nOwnedCells_, dim_ + 1);
-  for (const CellField& f : fields)
-    writeRows(file, h5Path, f.name, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE, f.data, nCells_, cellOffset_, nOwnedCells_, f.ncomp);
+            nOwnedCells_, nodesPerCell_);
+  for (const Dataset& f : fields) {
+    if (f.onNodes)
+      writeRows(file, h5Path, f.name, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE, f.data, nNodes_, nodeOffset_, nOwnedNodes_, f.ncomp);
+    else
+      writeRows(file, h5Path, f.name, H5T_NATIVE_DOUBLE, H5T_IEEE_F64LE, f.data, nCells_, cellOffset_, nOwnedCells_, f.ncomp);
+  }
   file.close(h5Path);  // collective: the .h5 is complete on disk before rank 0 references it
 
   std::string xmlError;
@@ -197,26 +237,33 @@ std::string XdmfWriter::writeStep(int index, double time, const std::vector<doub
   return h5Path;
 }
 
-std::string XdmfWriter::gridXml(int index, double time, const std::vector<CellField>& fields) const {
+std::string XdmfWriter::topologyXml(const std::string& h5) const {
+  std::ostringstream s;
+  s << "   <Topology TopologyType=\"" << topologyName(cellType_) << "\"";
+  if (cellType_ == CellType::Polyline) s << " NodesPerElement=\"" << nodesPerCell_ << "\"";  // XDMF needs it for lines
+  s << " NumberOfElements=\"" << nCells_ << "\">\n"
+    << dataItem(nCells_, nodesPerCell_, "Int", h5, "connectivity") << "   </Topology>\n";
+  return s.str();
+}
+
+std::string XdmfWriter::gridXml(int index, double time, const std::vector<Dataset>& fields) const {
   const std::string h5 = stepName(index) + ".h5";  // relative: the .xmf files sit next to the .h5
   std::ostringstream s;
   s << std::setprecision(17);
   s << "  <Grid Name=\"" << base_ << "\" GridType=\"Uniform\">\n"
     << "   <Time Value=\"" << time << "\"/>\n"
-    << "   <Topology TopologyType=\"" << (dim_ == 2 ? "Triangle" : "Tetrahedron") << "\" NumberOfElements=\"" << nCells_ << "\">\n"
-    << dataItem(nCells_, dim_ + 1, "Int", h5, "connectivity") << "   </Topology>\n"
+    << topologyXml(h5)
     << "   <Geometry GeometryType=\"XYZ\">\n"
     << dataItem(nNodes_, 3, "Float", h5, "coordinates") << "   </Geometry>\n";
-  for (const CellField& f : fields)
-    s << "   <Attribute Name=\"" << f.name << "\" AttributeType=\""
-      << (f.ncomp == 1 ? "Scalar" : f.ncomp == 3 ? "Vector" : "Tensor6")
-      << "\" Center=\"Cell\">\n"
-      << dataItem(nCells_, f.ncomp, "Float", h5, f.name) << "   </Attribute>\n";
+  for (const Dataset& f : fields)
+    s << "   <Attribute Name=\"" << f.name << "\" AttributeType=\"" << attributeType(f.ncomp) << "\" Center=\""
+      << (f.onNodes ? "Node" : "Cell") << "\">\n"
+      << dataItem(f.onNodes ? nNodes_ : nCells_, f.ncomp, "Float", h5, f.name) << "   </Attribute>\n";
   s << "  </Grid>\n";
   return s.str();
 }
 
-void XdmfWriter::writeXmlFiles(int index, double time, const std::vector<CellField>& fields) {
+void XdmfWriter::writeXmlFiles(int index, double time, const std::vector<Dataset>& fields) {
   const std::string header = "<?xml version=\"1.0\" ?>\n<Xdmf Version=\"3.0\"";
   writeFileAtomically(dir_ + "/" + stepName(index) + ".xmf",
                       header + ">\n <Domain>\n" + gridXml(index, time, fields) + " </Domain>\n</Xdmf>\n");

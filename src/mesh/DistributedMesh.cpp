@@ -1,32 +1,25 @@
 #include "mesh/DistributedMesh.hpp"
 
 #include <algorithm>
-#include <array>
-#include <map>
+#include <iterator>
 #include <numeric>
 #include <stdexcept>
 #include <string>
-#include <tuple>
+#include <type_traits>
 #include <unordered_map>
-#include <unordered_set>
 
-#include <mpi.h>
-
-#include <Teuchos_DefaultMpiComm.hpp>
 #include <Tpetra_Map_decl.hpp>
 #include <Zoltan2_PartitioningProblem.hpp>
 #include <Zoltan2_XpetraMultiVectorAdapter.hpp>
+
+#include "core/Mpi.hpp"
+#include "mesh/FaceKey.hpp"
+#include "mesh/GhostCells.hpp"
 
 namespace unilag
 {
 namespace
 {
-
-MPI_Comm rawComm(const Teuchos::RCP<const Comm>& comm)
-{
-    auto mpi = Teuchos::rcp_dynamic_cast<const Teuchos::MpiComm<int>>(comm);
-    return mpi.is_null() ? MPI_COMM_SELF : (*mpi->getRawMpiComm())();
-}
 
 void broadcastNames(std::vector<std::string>& names, MPI_Comm comm)
 {
@@ -46,10 +39,86 @@ void broadcastNames(std::vector<std::string>& names, MPI_Comm comm)
     }
 }
 
-Teuchos::RCP<const Map> mapOf(const std::vector<GO>& gids, const Teuchos::RCP<const Comm>& comm)
+//! Dimension, global counts and group names: rank 0's, on every rank.
+void broadcastHeader(const GlobalMesh& root, DistributedMesh& mesh, MPI_Comm comm)
 {
-    const auto INV = Teuchos::OrdinalTraits<Tpetra::global_size_t>::invalid();
-    return Teuchos::rcp(new Map(INV, Teuchos::ArrayView<const GO>(gids.data(), gids.size()), 0, comm));
+    long long header[3] = {root.dim, (long long)root.nCells(), (long long)root.nNodes()};
+    MPI_Bcast(header, 3, MPI_LONG_LONG, 0, comm);
+    mesh.dim = int(header[0]);
+    mesh.nv = mesh.dim + 1;
+    mesh.nGlobalCells = header[1];
+    mesh.nGlobalNodes = header[2];
+    mesh.regionNames = root.regionNames;
+    mesh.boundaryNames = root.boundaryNames;
+    broadcastNames(mesh.regionNames, comm);
+    broadcastNames(mesh.boundaryNames, comm);
+}
+
+//! Rank 0's mesh as rows of MultiVectors on rank 0: cell records, node coordinates and cell centroids.
+void writeRootRows(const GlobalMesh& root, MV& records, MV& coords, MV& centroids)
+{
+    const int nv = root.nv(), dim = root.dim;
+    auto r = records.getLocalViewHost(Tpetra::Access::OverwriteAll);
+    auto x = coords.getLocalViewHost(Tpetra::Access::OverwriteAll);
+    auto c = centroids.getLocalViewHost(Tpetra::Access::OverwriteAll);
+    for (std::size_t n = 0; n < root.nNodes(); ++n)
+        for (int d = 0; d < 3; ++d)
+            x(n, d) = root.coords[3 * n + d];
+    for (std::size_t i = 0; i < root.nCells(); ++i)
+    {
+        r(i, 0) = root.cellRegion[i];
+        for (int k = 0; k < nv; ++k)
+        {
+            const int node = root.cells[nv * i + k];
+            r(i, 1 + k) = node; // gids up to 2^53 travel exactly as doubles
+            r(i, 1 + nv + k) = root.cellFaceGroup[nv * i + k];
+            for (int d = 0; d < dim; ++d)
+                c(i, d) += root.coords[3 * node + d] / nv;
+        }
+    }
+}
+
+//! The cells each rank owns: Zoltan2 multijagged on the cell centroids (all on rank 0 before), sorted by gid.
+Teuchos::RCP<const Map> partitionCells(MV& centroids, const Teuchos::RCP<const Comm>& comm)
+{
+    if (comm->getSize() == 1)
+        return centroids.getMap();
+    using Adapter = Zoltan2::XpetraMultiVectorAdapter<MV>;
+    auto xc = Teuchos::rcpFromRef(centroids);
+    Adapter adapter(xc);
+    Teuchos::ParameterList zp("zoltan2");
+    zp.set("algorithm", "multijagged");
+    zp.set("imbalance_tolerance", 1.05);
+    zp.set("num_global_parts", comm->getSize());
+    Zoltan2::PartitioningProblem<Adapter> problem(&adapter, &zp, comm);
+    problem.solve();
+    Teuchos::RCP<MV> moved;
+    adapter.applyPartitioningSolution(centroids, moved, problem.getSolution());
+    auto list = moved->getMap()->getNodeElementList();
+    std::vector<GO> gids(list.begin(), list.end());
+    std::sort(gids.begin(), gids.end());
+    return mapOfGids(gids, comm);
+}
+
+//! rebuild's input errors, the same on every rank ("" when all is well). Collective.
+std::string rebuildInputError(const DistributedMesh& old, const std::vector<int>& newOwner, const MV& coords)
+{
+    const int nranks = old.comm->getSize();
+    std::string error;
+    if (newOwner.size() != std::size_t(old.nOwnedCells))
+        error = "newOwner has " + std::to_string(newOwner.size()) + " entries for " +
+                std::to_string(old.nOwnedCells) + " owned cells";
+    else if (std::any_of(newOwner.begin(), newOwner.end(), [&](int p) { return p < 0 || p >= nranks; }))
+        error = "newOwner names a rank outside [0, " + std::to_string(nranks) + ")";
+    else if (coords.getNumVectors() != 3)
+        error = "coords has " + std::to_string(coords.getNumVectors()) + " columns, not 3";
+    // isSameAs is collective: every rank asks both
+    const bool onOwned = coords.getMap()->isSameAs(*old.nodeMap);
+    const bool onOverlap = coords.getMap()->isSameAs(*old.nodeMapOverlap);
+    if (error.empty() && !onOwned && !onOverlap)
+        error = "coords is on neither the old nodeMap nor nodeMapOverlap";
+    error = mpi::firstMessage(mpi::rawComm(old.comm), error);
+    return error.empty() ? error : "DistributedMesh::rebuild: " + error;
 }
 
 } // namespace
@@ -58,235 +127,105 @@ std::shared_ptr<DistributedMesh> DistributedMesh::distribute(const GlobalMesh& r
 {
     auto mesh = std::make_shared<DistributedMesh>();
     mesh->comm = comm;
-    MPI_Comm mpi = rawComm(comm);
-    const int rank = comm->getRank();
-    const bool isRoot = rank == 0;
-
-    long long header[3] = {root.dim, (long long)root.nCells(), (long long)root.nNodes()};
-    MPI_Bcast(header, 3, MPI_LONG_LONG, 0, mpi);
-    mesh->dim = int(header[0]);
-    mesh->nv = mesh->dim + 1;
-    mesh->nGlobalCells = header[1];
-    mesh->nGlobalNodes = header[2];
-    mesh->regionNames = root.regionNames;
-    mesh->boundaryNames = root.boundaryNames;
-    broadcastNames(mesh->regionNames, mpi);
-    broadcastNames(mesh->boundaryNames, mpi);
-    const int nv = mesh->nv, dim = mesh->dim;
+    broadcastHeader(root, *mesh, mpi::rawComm(comm));
+    const bool isRoot = comm->getRank() == 0;
 
     // Everything starts on rank 0.
-    auto rootCells = Teuchos::rcp(new Map(mesh->nGlobalCells, isRoot ? mesh->nGlobalCells : 0, 0, comm));
-    auto rootNodes = Teuchos::rcp(new Map(mesh->nGlobalNodes, isRoot ? mesh->nGlobalNodes : 0, 0, comm));
-    MV records(rootCells, 1 + 2 * nv);
+    const GO nc = mesh->nGlobalCells, nn = mesh->nGlobalNodes;
+    auto rootCells = Teuchos::rcp(new Map(nc, isRoot ? nc : 0, 0, comm));
+    auto rootNodes = Teuchos::rcp(new Map(nn, isRoot ? nn : 0, 0, comm));
+    MV records(rootCells, recordColumns(mesh->nv));
     MV coords(rootNodes, 3);
-    MV centroids(rootCells, dim);
+    MV centroids(rootCells, mesh->dim);
     if (isRoot)
-    {
-        auto r = records.getLocalViewHost(Tpetra::Access::OverwriteAll);
-        auto x = coords.getLocalViewHost(Tpetra::Access::OverwriteAll);
-        auto c = centroids.getLocalViewHost(Tpetra::Access::OverwriteAll);
-        for (std::size_t n = 0; n < root.nNodes(); ++n)
-            for (int d = 0; d < 3; ++d)
-                x(n, d) = root.coords[3 * n + d];
-        for (std::size_t i = 0; i < root.nCells(); ++i)
-        {
-            r(i, 0) = root.cellRegion[i];
-            for (int k = 0; k < nv; ++k)
-            {
-                const int node = root.cells[nv * i + k];
-                r(i, 1 + k) = node; // gids up to 2^53 travel exactly as doubles
-                r(i, 1 + nv + k) = root.cellFaceGroup[nv * i + k];
-                for (int d = 0; d < dim; ++d)
-                    c(i, d) += root.coords[3 * node + d] / nv;
-            }
-        }
-    }
+        writeRootRows(root, records, coords, centroids);
 
-    // Zoltan2 multijagged on cell centroids.
-    Teuchos::RCP<const Map> owned = rootCells;
-    if (comm->getSize() > 1)
-    {
-        using Adapter = Zoltan2::XpetraMultiVectorAdapter<MV>;
-        auto xc = Teuchos::rcpFromRef(centroids);
-        Adapter adapter(xc);
-        Teuchos::ParameterList zp("zoltan2");
-        zp.set("algorithm", "multijagged");
-        zp.set("imbalance_tolerance", 1.05);
-        zp.set("num_global_parts", comm->getSize());
-        Zoltan2::PartitioningProblem<Adapter> problem(&adapter, &zp, comm);
-        problem.solve();
-        Teuchos::RCP<MV> moved;
-        adapter.applyPartitioningSolution(centroids, moved, problem.getSolution());
-        auto list = moved->getMap()->getNodeElementList();
-        std::vector<GO> gids(list.begin(), list.end());
-        std::sort(gids.begin(), gids.end());
-        owned = mapOf(gids, comm);
-    }
-    MV mine(owned, 1 + 2 * nv);
+    auto owned = partitionCells(centroids, comm);
+    MV mine(owned, recordColumns(mesh->nv));
     mine.doImport(records, Importer(rootCells, owned), Tpetra::INSERT);
-
-    OwnedCells oc;
-    {
-        auto r = mine.getLocalViewHost(Tpetra::Access::ReadOnly);
-        const LO n = LO(owned->getNodeNumElements());
-        for (LO i = 0; i < n; ++i)
-        {
-            oc.gid.push_back(owned->getGlobalElement(i));
-            oc.region.push_back(int(r(i, 0)));
-            for (int k = 0; k < nv; ++k)
-            {
-                oc.nodes.push_back(GO(r(i, 1 + k)));
-                oc.groups.push_back(int(r(i, 1 + nv + k)));
-            }
-        }
-    }
-    mesh->buildFromOwnedCells(oc, coords);
+    mesh->buildFromOwnedCells(readRecordRows(mine, mesh->nv), coords);
     return mesh;
 }
 
-void DistributedMesh::buildFromOwnedCells(const OwnedCells& oc, const MV& rootCoords)
+std::shared_ptr<DistributedMesh> DistributedMesh::rebuild(const DistributedMesh& old, const std::vector<int>& newOwner,
+                                                          const MV& coords)
 {
-    MPI_Comm mpi = rawComm(comm);
-    const int nranks = comm->getSize();
-    const LO nOwn = LO(oc.gid.size());
-    cellMap = mapOf(oc.gid, comm);
+    const std::string error = rebuildInputError(old, newOwner, coords);
+    if (!error.empty())
+        throw std::invalid_argument(error);
+    auto mesh = std::make_shared<DistributedMesh>();
+    mesh->comm = old.comm;
+    mesh->dim = old.dim;
+    mesh->nv = old.nv;
+    mesh->nGlobalCells = old.nGlobalCells;
+    mesh->nGlobalNodes = old.nGlobalNodes;
+    mesh->regionNames = old.regionNames;
+    mesh->boundaryNames = old.boundaryNames;
+
+    const CellRecords moved = migrateRecords(old.ownedRecords(), newOwner, old.cellMap);
+    // the owned rows come first in nodeMapOverlap, so its first nOwnedNodes rows are a vector on nodeMap
+    auto ownedCoords = coords.getMap()->isSameAs(*old.nodeMap) ? Teuchos::rcpFromRef(coords)
+                                                               : coords.offsetView(old.nodeMap, 0);
+    mesh->buildFromOwnedCells(moved, *ownedCoords);
+    return mesh;
+}
+
+CellRecords DistributedMesh::ownedRecords() const
+{
+    CellRecords owned;
+    owned.nv = nv;
+    std::vector<GO> nodes(nv);
+    for (LO i = 0; i < nOwnedCells; ++i)
+    {
+        for (int k = 0; k < nv; ++k)
+            nodes[k] = nodeGid[cellNodesHost[std::size_t(nv) * i + k]];
+        owned.append(cellGid[i], cellRegion[i], nodes.data(), &cellFaceGroupHost[std::size_t(nv) * i]);
+    }
+    return owned;
+}
+
+void DistributedMesh::buildFromOwnedCells(const CellRecords& owned, const MV& coords)
+{
+    cellMap = mapOfGids(owned.gid, comm);
 
     // Node ownership: one rank among those owning a cell around the node.
-    std::vector<GO> touched(oc.nodes);
+    std::vector<GO> touched(owned.nodes);
     std::sort(touched.begin(), touched.end());
     touched.erase(std::unique(touched.begin(), touched.end()), touched.end());
-    auto ownedNodesMap = Tpetra::createOneToOne(mapOf(touched, comm));
+    auto ownedNodesMap = Tpetra::createOneToOne(mapOfGids(touched, comm));
     std::vector<GO> ownedNodes(ownedNodesMap->getNodeElementList().begin(), ownedNodesMap->getNodeElementList().end());
     std::sort(ownedNodes.begin(), ownedNodes.end());
-    nodeMap = mapOf(ownedNodes, comm);
+    nodeMap = mapOfGids(ownedNodes, comm);
 
-    // Ghosts: send every (node, cell record) to the node's owner, which then knows all cells around it.
-    std::vector<int> owner(oc.nodes.size());
-    {
-        // query each distinct node once (the directory lookup does not like repeated ids)
-        Teuchos::Array<int> pids(touched.size());
-        nodeMap->getRemoteIndexList(Teuchos::ArrayView<const GO>(touched.data(), touched.size()), pids());
-        for (std::size_t q = 0; q < oc.nodes.size(); ++q)
-            owner[q] = pids[std::lower_bound(touched.begin(), touched.end(), oc.nodes[q]) - touched.begin()];
-    }
-    const int L = 3 + 2 * nv; // node, cell gid, region, nodes, groups
-    std::vector<int> sendCount(nranks, 0), recvCount(nranks), sdispl(nranks + 1, 0), rdispl(nranks + 1, 0);
-    for (std::size_t q = 0; q < oc.nodes.size(); ++q)
-        sendCount[owner[q]] += L;
-    for (int p = 0; p < nranks; ++p)
-        sdispl[p + 1] = sdispl[p] + sendCount[p];
-    std::vector<long long> sendBuf(sdispl[nranks]);
-    {
-        std::vector<int> pos(sdispl.begin(), sdispl.end() - 1);
-        for (LO i = 0; i < nOwn; ++i)
-            for (int k = 0; k < nv; ++k)
-            {
-                const std::size_t q = std::size_t(nv) * i + k;
-                long long* rec = &sendBuf[pos[owner[q]]];
-                pos[owner[q]] += L;
-                rec[0] = oc.nodes[q];
-                rec[1] = oc.gid[i];
-                rec[2] = oc.region[i];
-                for (int j = 0; j < nv; ++j)
-                {
-                    rec[3 + j] = oc.nodes[std::size_t(nv) * i + j];
-                    rec[3 + nv + j] = oc.groups[std::size_t(nv) * i + j];
-                }
-            }
-    }
-    MPI_Alltoall(sendCount.data(), 1, MPI_INT, recvCount.data(), 1, MPI_INT, mpi);
-    for (int p = 0; p < nranks; ++p)
-        rdispl[p + 1] = rdispl[p] + recvCount[p];
-    std::vector<long long> recvBuf(rdispl[nranks]);
-    MPI_Alltoallv(sendBuf.data(), sendCount.data(), sdispl.data(), MPI_LONG_LONG, recvBuf.data(), recvCount.data(),
-                  rdispl.data(), MPI_LONG_LONG, mpi);
+    const CellRecords ghosts = gatherGhostCells(owned, touched, *nodeMap, mpi::rawComm(comm));
+    const std::vector<GO> cellNodeGid = setLocalCells(owned, ghosts);
+    setLocalNodes(ownedNodes, cellNodeGid);
+    findFaceNeighbours();
+    importCoordinates(coords);
+    buildDeviceViews();
+    numberOutputNodes();
+}
 
-    // The node owner now holds every cell around its owned nodes (from the records of phase 1). Phase 2: it
-    // sends back, to each other rank that touches the node, the cells around the node that rank does not own;
-    // so every rank receives every cell that shares a node with one of its owned cells.
-    const int me = comm->getRank();
-    std::vector<int> recvRank(recvBuf.size() / L);
-    for (int p = 0; p < nranks; ++p)
-        for (int off = rdispl[p]; off < rdispl[p + 1]; off += L)
-            recvRank[off / L] = p;
-    std::vector<int> send2Count(nranks, 0), recv2Count(nranks), s2displ(nranks + 1, 0), r2displ(nranks + 1, 0);
-    std::vector<std::vector<long long>> send2(nranks);
-    {
-        // records grouped by node
-        std::vector<std::pair<GO, std::size_t>> byNode;
-        byNode.reserve(recvBuf.size() / L);
-        for (std::size_t off = 0; off < recvBuf.size(); off += L)
-            byNode.emplace_back(recvBuf[off], off);
-        std::sort(byNode.begin(), byNode.end());
-        std::vector<char> touches(nranks);
-        std::vector<std::unordered_set<GO>> sent(nranks); // each cell once per destination
-        for (std::size_t a = 0, b; a < byNode.size(); a = b)
-        {
-            for (b = a; b < byNode.size() && byNode[b].first == byNode[a].first;)
-                ++b;
-            std::fill(touches.begin(), touches.end(), 0);
-            for (std::size_t q = a; q < b; ++q)
-                touches[recvRank[byNode[q].second / L]] = 1;
-            for (int p = 0; p < nranks; ++p)
-            {
-                if (p == me || !touches[p])
-                    continue;
-                for (std::size_t q = a; q < b; ++q)
-                {
-                    const std::size_t off = byNode[q].second;
-                    if (recvRank[off / L] != p && sent[p].insert(recvBuf[off + 1]).second)
-                        send2[p].insert(send2[p].end(), recvBuf.begin() + off, recvBuf.begin() + off + L);
-                }
-            }
-        }
-    }
-    for (int p = 0; p < nranks; ++p)
-    {
-        send2Count[p] = int(send2[p].size());
-        s2displ[p + 1] = s2displ[p] + send2Count[p];
-    }
-    std::vector<long long> send2Buf(s2displ[nranks]);
-    for (int p = 0; p < nranks; ++p)
-        std::copy(send2[p].begin(), send2[p].end(), send2Buf.begin() + s2displ[p]);
-    MPI_Alltoall(send2Count.data(), 1, MPI_INT, recv2Count.data(), 1, MPI_INT, mpi);
-    for (int p = 0; p < nranks; ++p)
-        r2displ[p + 1] = r2displ[p] + recv2Count[p];
-    std::vector<long long> recv2Buf(r2displ[nranks]);
-    MPI_Alltoallv(send2Buf.data(), send2Count.data(), s2displ.data(), MPI_LONG_LONG, recv2Buf.data(),
-                  recv2Count.data(), r2displ.data(), MPI_LONG_LONG, mpi);
+//! Local cells: owned (sorted by gid) then ghosts (sorted by gid). Returns their node gids, nv per cell.
+std::vector<GO> DistributedMesh::setLocalCells(const CellRecords& owned, const CellRecords& ghosts)
+{
+    nOwnedCells = LO(owned.size());
+    nCells = nOwnedCells + LO(ghosts.size());
+    cellGid = owned.gid;
+    cellGid.insert(cellGid.end(), ghosts.gid.begin(), ghosts.gid.end());
+    cellRegion = owned.region;
+    cellRegion.insert(cellRegion.end(), ghosts.region.begin(), ghosts.region.end());
+    cellFaceGroupHost = owned.groups;
+    cellFaceGroupHost.insert(cellFaceGroupHost.end(), ghosts.groups.begin(), ghosts.groups.end());
+    cellMapOverlap = mapOfGids(cellGid, comm);
+    std::vector<GO> cellNodeGid(owned.nodes);
+    cellNodeGid.insert(cellNodeGid.end(), ghosts.nodes.begin(), ghosts.nodes.end());
+    return cellNodeGid;
+}
 
-    // Ghosts: the cells of both phases that this rank does not own (records of one cell are identical).
-    std::map<GO, const long long*> ghostRecord; // gid -> record
-    {
-        std::unordered_map<GO, LO> isOwned;
-        for (LO i = 0; i < nOwn; ++i)
-            isOwned[oc.gid[i]] = i;
-        for (const auto* buf : {&recvBuf, &recv2Buf})
-            for (std::size_t off = 0; off < buf->size(); off += L)
-                if (!isOwned.count((*buf)[off + 1]))
-                    ghostRecord.emplace((*buf)[off + 1], buf->data() + off);
-    }
-
-    // Local cells: owned (sorted) then ghosts (sorted).
-    nOwnedCells = nOwn;
-    nCells = nOwn + LO(ghostRecord.size());
-    cellGid = oc.gid;
-    cellRegion = oc.region;
-    std::vector<GO> cellNodeGid(oc.nodes);
-    cellFaceGroupHost = oc.groups;
-    for (const auto& [gid, rec] : ghostRecord)
-    {
-        cellGid.push_back(gid);
-        cellRegion.push_back(int(rec[2]));
-        for (int j = 0; j < nv; ++j)
-        {
-            cellNodeGid.push_back(rec[3 + j]);
-            cellFaceGroupHost.push_back(int(rec[3 + nv + j]));
-        }
-    }
-    cellMapOverlap = mapOf(cellGid, comm);
-
-    // Local nodes: owned (sorted) then the other nodes of local cells (sorted).
+//! Local nodes: owned (sorted) then the other nodes of local cells (sorted); the importers and cellNodesHost.
+void DistributedMesh::setLocalNodes(const std::vector<GO>& ownedNodes, const std::vector<GO>& cellNodeGid)
+{
     std::vector<GO> others;
     {
         std::vector<GO> all(cellNodeGid);
@@ -298,7 +237,7 @@ void DistributedMesh::buildFromOwnedCells(const OwnedCells& oc, const MV& rootCo
     nodeGid.insert(nodeGid.end(), others.begin(), others.end());
     nOwnedNodes = LO(ownedNodes.size());
     nNodes = LO(nodeGid.size());
-    nodeMapOverlap = mapOf(nodeGid, comm);
+    nodeMapOverlap = mapOfGids(nodeGid, comm);
     cellImporter = Teuchos::rcp(new Importer(cellMap, cellMapOverlap));
     nodeImporter = Teuchos::rcp(new Importer(nodeMap, nodeMapOverlap));
 
@@ -308,139 +247,106 @@ void DistributedMesh::buildFromOwnedCells(const OwnedCells& oc, const MV& rootCo
     cellNodesHost.resize(cellNodeGid.size());
     for (std::size_t q = 0; q < cellNodeGid.size(); ++q)
         cellNodesHost[q] = nodeLid.at(cellNodeGid[q]);
+}
 
-    // Face neighbours: faces (opposite local node k) matched by their sorted node ids.
-    {
-        struct FaceRec
+//! Face neighbours: faces (opposite local node k) matched by their sorted local node ids.
+void DistributedMesh::findFaceNeighbours()
+{
+    static_assert(std::is_same_v<LO, int>, "FaceKey holds local node ids as int");
+    cellNeighbourHost.assign(cellNodesHost.size(), -1);
+    auto link = [this](const FaceRef& a, const FaceRef& b) {
+        cellNeighbourHost[std::size_t(nv) * a.cell + a.k] = b.cell;
+        cellNeighbourHost[std::size_t(nv) * b.cell + b.k] = a.cell;
+    };
+    if (matchFaces(cellNodesHost.data(), std::size_t(nCells), nv, link, [](const FaceRef&) {}))
+        throw std::logic_error("DistributedMesh: a face is shared by more than two cells");
+    // Owned cells see every face neighbour (the ghost layer holds all cells sharing a node with them), so an
+    // owned face has a local neighbour exactly when it is not a boundary face.
+    for (LO i = 0; i < nOwnedCells; ++i)
+        for (int k = 0; k < nv; ++k)
         {
-            std::array<LO, 3> key;
-            LO cell;
-            int k;
-        };
-        std::vector<FaceRec> faces;
-        faces.reserve(cellNodesHost.size());
-        for (LO i = 0; i < nCells; ++i)
-            for (int k = 0; k < nv; ++k)
-            {
-                FaceRec f{{-1, -1, -1}, i, k};
-                int n = 0;
-                for (int j = 0; j < nv; ++j)
-                    if (j != k)
-                        f.key[n++] = cellNodesHost[std::size_t(nv) * i + j];
-                auto order = [&f](int a, int b) {
-                    if (f.key[b] < f.key[a])
-                        std::swap(f.key[a], f.key[b]);
-                };
-                order(0, 1); // 3-entry sorting network; in 2D the third entry stays -1
-                if (n == 3)
-                {
-                    order(1, 2);
-                    order(0, 1);
-                }
-                faces.push_back(f);
-            }
-        std::sort(faces.begin(), faces.end(), [](const FaceRec& a, const FaceRec& b) {
-            return std::tie(a.key, a.cell, a.k) < std::tie(b.key, b.cell, b.k);
-        });
-        cellNeighbourHost.assign(cellNodesHost.size(), -1);
-        for (std::size_t a = 0, b; a < faces.size(); a = b)
-        {
-            for (b = a + 1; b < faces.size() && faces[b].key == faces[a].key;)
-                ++b;
-            if (b - a > 2)
-                throw std::logic_error("DistributedMesh: a face is shared by more than two cells");
-            if (b - a == 2)
-            {
-                cellNeighbourHost[std::size_t(nv) * faces[a].cell + faces[a].k] = faces[a + 1].cell;
-                cellNeighbourHost[std::size_t(nv) * faces[a + 1].cell + faces[a + 1].k] = faces[a].cell;
-            }
+            const std::size_t q = std::size_t(nv) * i + k;
+            if ((cellFaceGroupHost[q] < 0) != (cellNeighbourHost[q] >= 0))
+                throw std::logic_error("DistributedMesh: face " + std::to_string(k) + " of cell " +
+                                       std::to_string(cellGid[i]) +
+                                       (cellFaceGroupHost[q] < 0 ? " is interior but has no local neighbour"
+                                                                 : " is a boundary face with a neighbour"));
         }
-        // Owned cells see every face neighbour (the ghost layer holds all cells sharing a node with them), so
-        // an owned face has a local neighbour exactly when it is not a boundary face.
-        for (LO i = 0; i < nOwnedCells; ++i)
-            for (int k = 0; k < nv; ++k)
-            {
-                const std::size_t q = std::size_t(nv) * i + k;
-                if ((cellFaceGroupHost[q] < 0) != (cellNeighbourHost[q] >= 0))
-                    throw std::logic_error("DistributedMesh: face " + std::to_string(k) + " of cell " +
-                                           std::to_string(cellGid[i]) +
-                                           (cellFaceGroupHost[q] < 0 ? " is interior but has no local neighbour"
-                                                                     : " is a boundary face with a neighbour"));
-            }
-    }
+}
 
-    // Coordinates of all local nodes.
-    {
-        MV x(nodeMapOverlap, 3);
-        x.doImport(rootCoords, Importer(rootCoords.getMap(), nodeMapOverlap), Tpetra::INSERT);
-        auto xh = x.getLocalViewHost(Tpetra::Access::ReadOnly);
-        coords0.resize(3 * std::size_t(nNodes));
-        for (LO n = 0; n < nNodes; ++n)
-            for (int d = 0; d < 3; ++d)
-                coords0[3 * n + d] = xh(n, d);
-    }
+//! coords0 of all local nodes, imported from coords (3 columns on a one-to-one node map).
+void DistributedMesh::importCoordinates(const MV& coords)
+{
+    MV x(nodeMapOverlap, 3);
+    x.doImport(coords, Importer(coords.getMap(), nodeMapOverlap), Tpetra::INSERT);
+    auto xh = x.getLocalViewHost(Tpetra::Access::ReadOnly);
+    coords0.resize(3 * std::size_t(nNodes));
+    for (LO n = 0; n < nNodes; ++n)
+        for (int d = 0; d < 3; ++d)
+            coords0[3 * n + d] = xh(n, d);
+}
 
-    // Node -> corner CSR, corners sorted by (global cell id, local node).
-    std::vector<LO> offsets(nNodes + 1, 0);
+/*! The node -> corner CSR (corner q = nv * cell + local node), each node's corners sorted by (global cell id,
+ *  local node): node sums then add in the same order on any number of ranks. */
+void DistributedMesh::nodeCornerLists(std::vector<LO>& offsets, std::vector<LO>& corners) const
+{
+    offsets.assign(nNodes + 1, 0);
     for (LO q = 0; q < LO(cellNodesHost.size()); ++q)
         ++offsets[cellNodesHost[q] + 1];
     std::partial_sum(offsets.begin(), offsets.end(), offsets.begin());
-    std::vector<LO> corners(cellNodesHost.size());
-    {
-        std::vector<LO> pos(offsets.begin(), offsets.end() - 1);
-        for (LO q = 0; q < LO(cellNodesHost.size()); ++q)
-            corners[pos[cellNodesHost[q]]++] = q;
-        for (LO n = 0; n < nNodes; ++n)
-            std::sort(corners.begin() + offsets[n], corners.begin() + offsets[n + 1], [&](LO a, LO b) {
-                return std::make_pair(cellGid[a / nv], a % nv) < std::make_pair(cellGid[b / nv], b % nv);
-            });
-    }
+    corners.resize(cellNodesHost.size());
+    std::vector<LO> pos(offsets.begin(), offsets.end() - 1);
+    for (LO q = 0; q < LO(cellNodesHost.size()); ++q)
+        corners[pos[cellNodesHost[q]]++] = q;
+    for (LO n = 0; n < nNodes; ++n)
+        std::sort(corners.begin() + offsets[n], corners.begin() + offsets[n + 1], [&](LO a, LO b) {
+            return std::make_pair(cellGid[a / nv], a % nv) < std::make_pair(cellGid[b / nv], b % nv);
+        });
+}
 
-    // Device copies.
+//! Device copies of the cell tables and of the node -> corner lists.
+void DistributedMesh::buildDeviceViews()
+{
+    std::vector<LO> offsets, corners;
+    nodeCornerLists(offsets, corners);
     cellNodes = Kokkos::View<LO**, Kokkos::LayoutLeft, MemSpace>("unilag::cellNodes", nCells, nv);
     cellFaceGroup = View<int**>("unilag::cellFaceGroup", nCells, nv);
     cellNeighbour = View<LO**>("unilag::cellNeighbour", nCells, nv);
     nodeCornerOffsets = View<LO*>("unilag::nodeCornerOffsets", nNodes + 1);
     nodeCorners = View<LO*>("unilag::nodeCorners", corners.size());
-    {
-        auto cn = Kokkos::create_mirror_view(cellNodes);
-        auto fg = Kokkos::create_mirror_view(cellFaceGroup);
-        auto nb = Kokkos::create_mirror_view(cellNeighbour);
-        for (LO i = 0; i < nCells; ++i)
-            for (int k = 0; k < nv; ++k)
-            {
-                cn(i, k) = cellNodesHost[std::size_t(nv) * i + k];
-                fg(i, k) = cellFaceGroupHost[std::size_t(nv) * i + k];
-                nb(i, k) = cellNeighbourHost[std::size_t(nv) * i + k];
-            }
-        Kokkos::deep_copy(cellNodes, cn);
-        Kokkos::deep_copy(cellFaceGroup, fg);
-        Kokkos::deep_copy(cellNeighbour, nb);
-        Kokkos::deep_copy(nodeCornerOffsets,
-                          Kokkos::View<const LO*, Kokkos::HostSpace, Kokkos::MemoryUnmanaged>(offsets.data(), offsets.size()));
-        Kokkos::deep_copy(nodeCorners,
-                          Kokkos::View<const LO*, Kokkos::HostSpace, Kokkos::MemoryUnmanaged>(corners.data(), corners.size()));
-    }
-
-    // Output numbering: contiguous per rank for owned nodes, imported for the others.
-    long long nOwnedLL = nOwnedNodes;
-    nodeOutputOffset = 0;
-    MPI_Exscan(&nOwnedLL, &nodeOutputOffset, 1, MPI_LONG_LONG, MPI_SUM, mpi);
-    if (comm->getRank() == 0)
-        nodeOutputOffset = 0;
-    {
-        MV ids(nodeMap, 1), idsOv(nodeMapOverlap, 1);
+    auto cn = Kokkos::create_mirror_view(cellNodes);
+    auto fg = Kokkos::create_mirror_view(cellFaceGroup);
+    auto nb = Kokkos::create_mirror_view(cellNeighbour);
+    for (LO i = 0; i < nCells; ++i)
+        for (int k = 0; k < nv; ++k)
         {
-            auto h = ids.getLocalViewHost(Tpetra::Access::OverwriteAll);
-            for (LO n = 0; n < nOwnedNodes; ++n)
-                h(n, 0) = double(nodeOutputOffset + n);
+            cn(i, k) = cellNodesHost[std::size_t(nv) * i + k];
+            fg(i, k) = cellFaceGroupHost[std::size_t(nv) * i + k];
+            nb(i, k) = cellNeighbourHost[std::size_t(nv) * i + k];
         }
-        idsOv.doImport(ids, *nodeImporter, Tpetra::INSERT);
-        auto h = idsOv.getLocalViewHost(Tpetra::Access::ReadOnly);
-        nodeOutputId.resize(nNodes);
-        for (LO n = 0; n < nNodes; ++n)
-            nodeOutputId[n] = (long long)h(n, 0);
+    Kokkos::deep_copy(cellNodes, cn);
+    Kokkos::deep_copy(cellFaceGroup, fg);
+    Kokkos::deep_copy(cellNeighbour, nb);
+    using HostArray = Kokkos::View<const LO*, Kokkos::HostSpace, Kokkos::MemoryUnmanaged>;
+    Kokkos::deep_copy(nodeCornerOffsets, HostArray(offsets.data(), offsets.size()));
+    Kokkos::deep_copy(nodeCorners, HostArray(corners.data(), corners.size()));
+}
+
+//! Output numbering: contiguous per rank for owned nodes, imported for the others.
+void DistributedMesh::numberOutputNodes()
+{
+    nodeOutputOffset = mpi::exclusiveOffset(mpi::rawComm(comm), nOwnedNodes);
+    MV ids(nodeMap, 1), idsOv(nodeMapOverlap, 1);
+    {
+        auto h = ids.getLocalViewHost(Tpetra::Access::OverwriteAll);
+        for (LO n = 0; n < nOwnedNodes; ++n)
+            h(n, 0) = double(nodeOutputOffset + n);
     }
+    idsOv.doImport(ids, *nodeImporter, Tpetra::INSERT);
+    auto h = idsOv.getLocalViewHost(Tpetra::Access::ReadOnly);
+    nodeOutputId.resize(nNodes);
+    for (LO n = 0; n < nNodes; ++n)
+        nodeOutputId[n] = (long long)h(n, 0);
 }
 
 } // namespace unilag

@@ -10,8 +10,9 @@
  *  nodes of local cells, each part sorted by global id. Node->corner lists are sorted by global cell id, so
  *  every node sum adds the same numbers in the same order on any number of ranks and threads.
  *
- *  The same construction (buildFromOwnedCells) serves a later repartitioning: move the owned cell records with
- *  a Tpetra Import to the new owners, then rebuild ghosts, maps and plans.
+ *  distribute() and rebuild() share one construction from the owned cell records (CellRecords.hpp): distribute
+ *  moves them from rank 0 to Zoltan2's owners, rebuild from the current owners to new ones (repartitioning a
+ *  moving mesh); then ghosts, maps, importers, face neighbours and node->corner lists follow from them.
  */
 #pragma once
 
@@ -19,23 +20,15 @@
 #include <string>
 #include <vector>
 
-#include <Teuchos_Comm.hpp>
 #include <Teuchos_RCP.hpp>
-#include <Tpetra_Import.hpp>
-#include <Tpetra_Map.hpp>
-#include <Tpetra_MultiVector.hpp>
 
+#include "core/Types.hpp"
+#include "mesh/CellRecords.hpp"
 #include "mesh/GlobalMesh.hpp"
 #include "unilag/Geometry.hpp"
 
 namespace unilag
 {
-
-using Map = Tpetra::Map<LO>;
-using GO = Map::global_ordinal_type;
-using MV = Tpetra::MultiVector<double, LO, GO>;
-using Importer = Tpetra::Import<LO, GO>;
-using Comm = Teuchos::Comm<int>;
 
 class DistributedMesh
 {
@@ -43,6 +36,18 @@ class DistributedMesh
     /*! \brief Partition and distribute a mesh that lives on rank 0 (root is ignored on other ranks).
      *  Collective. */
     static std::shared_ptr<DistributedMesh> distribute(const GlobalMesh& root, Teuchos::RCP<const Comm> comm);
+
+    /*! \brief The same mesh with its cells owned by new ranks, for repartitioning a moving mesh. Collective.
+     *  \param old the mesh as it is distributed now
+     *  \param newOwner for each owned cell of old (local index < old.nOwnedCells), the rank to own it next
+     *  \param coords current node coordinates, 3 columns, on old.nodeMap or old.nodeMapOverlap (owned rows read)
+     *  The owned cell records move to their new ranks with a Tpetra Import; the new mesh is then built exactly as
+     *  distribute builds one, with coords0 = coords. Global cell and node ids are kept, so the caller moves its
+     *  fields with Import(old.cellMap, mesh->cellMap) and Import(old.nodeMap, mesh->nodeMap). With every cell
+     *  staying on its rank the result equals old: same maps, local numbering, corner lists and output ids.
+     *  \throws std::invalid_argument on every rank if any rank passed a wrong size, rank or map. */
+    static std::shared_ptr<DistributedMesh> rebuild(const DistributedMesh& old, const std::vector<int>& newOwner,
+                                                    const MV& coords);
 
     int dim = 0, nv = 0;
     Teuchos::RCP<const Comm> comm;
@@ -60,7 +65,7 @@ class DistributedMesh
     std::vector<LO> cellNodesHost;   //!< nv per cell
     std::vector<int> cellFaceGroupHost; //!< nv per cell
     std::vector<LO> cellNeighbourHost;  //!< nv per cell: local cell across face k, -1 if none is local
-    std::vector<double> coords0;     //!< initial node coordinates, 3 per local node
+    std::vector<double> coords0;     //!< node coordinates when built (mesh file or rebuild's), 3 per local node
 
     // Device views for the kernels.
     Kokkos::View<LO**, Kokkos::LayoutLeft, MemSpace> cellNodes;
@@ -89,15 +94,15 @@ class DistributedMesh
     }
 
   private:
-    //! Cell records (region, node gids, face groups) of the cells this rank owns, sorted by gid.
-    struct OwnedCells
-    {
-        std::vector<GO> gid;
-        std::vector<int> region;
-        std::vector<GO> nodes;   //!< nv per cell
-        std::vector<int> groups; //!< nv per cell
-    };
-    void buildFromOwnedCells(const OwnedCells& owned, const MV& rootCoords);
+    void buildFromOwnedCells(const CellRecords& owned, const MV& coords);
+    std::vector<GO> setLocalCells(const CellRecords& owned, const CellRecords& ghosts);
+    void setLocalNodes(const std::vector<GO>& ownedNodes, const std::vector<GO>& cellNodeGid);
+    void findFaceNeighbours();
+    void importCoordinates(const MV& coords);
+    void nodeCornerLists(std::vector<LO>& offsets, std::vector<LO>& corners) const;
+    void buildDeviceViews();
+    void numberOutputNodes();
+    CellRecords ownedRecords() const;
 };
 
 } // namespace unilag

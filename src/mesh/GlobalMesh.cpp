@@ -10,6 +10,7 @@
 #include <gmsh.h>
 
 #include "config/Scene.hpp"
+#include "mesh/FaceKey.hpp"
 
 namespace unilag
 {
@@ -41,22 +42,64 @@ double signedMeasure(int dim, const double* a, const double* b, const double* c,
            6.0;
 }
 
-using FaceKey = std::array<int, 3>; // sorted node indices; third = -1 in 2D
-
-FaceKey faceKey(const int* nodes, int n)
+//! The boundary physical groups: their names into m.boundaryNames, and each face's group by the face's key.
+std::map<FaceKey, int> readBoundaryGroups(GlobalMesh& m, const std::unordered_map<std::size_t, int>& index)
 {
-    // sorting network for 2 or 3 entries
-    FaceKey k{nodes[0], nodes[1], n == 3 ? nodes[2] : -1};
-    if (k[0] > k[1])
-        std::swap(k[0], k[1]);
-    if (n == 3)
+    // faces are lines in 2D, triangles in 3D
+    std::map<FaceKey, int> boundaryFace;
+    gmsh::vectorpair bgroups;
+    gmsh::model::getPhysicalGroups(bgroups, m.dim - 1);
+    const int faceType = gmsh::model::mesh::getElementType(m.dim == 2 ? "Line" : "Triangle", 1);
+    for (const auto& [dim, tag] : bgroups)
     {
-        if (k[1] > k[2])
-            std::swap(k[1], k[2]);
-        if (k[0] > k[1])
-            std::swap(k[0], k[1]);
+        std::string name;
+        gmsh::model::getPhysicalName(dim, tag, name);
+        if (name.empty())
+            name = std::to_string(tag);
+        const int g = int(m.boundaryNames.size());
+        m.boundaryNames.push_back(name);
+        std::vector<int> entities;
+        gmsh::model::getEntitiesForPhysicalGroup(dim, tag, entities);
+        for (int e : entities)
+        {
+            std::vector<std::size_t> tags, nodes;
+            gmsh::model::mesh::getElementsByType(faceType, tags, nodes, e);
+            for (std::size_t f = 0; f < tags.size(); ++f)
+            {
+                int idx[3] = {-1, -1, -1};
+                for (int k = 0; k < m.dim; ++k)
+                    idx[k] = index.at(nodes[m.dim * f + k]);
+                boundaryFace[faceKey(idx, m.dim)] = g;
+            }
+        }
     }
-    return k;
+    return boundaryFace;
+}
+
+//! Each face of one cell is a boundary face: its group from boundaryFace, where it must be.
+void assignFaceGroups(const std::string& source, GlobalMesh& m, const std::vector<std::size_t>& nodeTags,
+                      const std::map<FaceKey, int>& boundaryFace)
+{
+    const int nv = m.nv();
+    m.cellFaceGroup.assign(m.nCells() * nv, -1);
+    auto onBoundary = [&](const FaceRef& f) {
+        auto it = boundaryFace.find(f.key);
+        if (it == boundaryFace.end())
+        {
+            std::string nodes;
+            for (int k = 0; k < m.dim; ++k)
+                nodes += " " + std::to_string(nodeTags[f.key[k]]);
+            throw InputError(source + ": boundary face (nodes" + nodes + ") of element " +
+                             std::to_string(m.cellTag[f.cell]) +
+                             " is in no boundary physical group; name every boundary in the geometry");
+        }
+        m.cellFaceGroup[nv * f.cell + f.k] = it->second;
+    };
+    const auto overShared = matchFaces(m.cells.data(), m.nCells(), nv, [](const FaceRef&, const FaceRef&) {},
+                                       onBoundary);
+    if (overShared)
+        throw InputError(source + ": a face is shared by more than two elements (element " +
+                         std::to_string(m.cellTag[overShared->cell]) + ")");
 }
 
 void extract(const std::string& source, GlobalMesh& m)
@@ -145,78 +188,8 @@ void extract(const std::string& source, GlobalMesh& m)
     if (m.nCells() == 0)
         throw InputError(source + ": the mesh has no " + std::string(m.dim == 2 ? "triangles" : "tetrahedra"));
 
-    // Boundary groups: faces (lines in 2D, triangles in 3D) by sorted node indices.
-    std::map<FaceKey, int> boundaryFace;
-    gmsh::vectorpair bgroups;
-    gmsh::model::getPhysicalGroups(bgroups, m.dim - 1);
-    const int faceType = gmsh::model::mesh::getElementType(m.dim == 2 ? "Line" : "Triangle", 1);
-    for (const auto& [dim, tag] : bgroups)
-    {
-        std::string name;
-        gmsh::model::getPhysicalName(dim, tag, name);
-        if (name.empty())
-            name = std::to_string(tag);
-        const int g = int(m.boundaryNames.size());
-        m.boundaryNames.push_back(name);
-        std::vector<int> entities;
-        gmsh::model::getEntitiesForPhysicalGroup(dim, tag, entities);
-        for (int e : entities)
-        {
-            std::vector<std::size_t> tags, nodes;
-            gmsh::model::mesh::getElementsByType(faceType, tags, nodes, e);
-            for (std::size_t f = 0; f < tags.size(); ++f)
-            {
-                int idx[3] = {-1, -1, -1};
-                for (int k = 0; k < m.dim; ++k)
-                    idx[k] = index.at(nodes[m.dim * f + k]);
-                boundaryFace[faceKey(idx, m.dim)] = g;
-            }
-        }
-    }
-
-    // Face adjacency by sorting (key, cell, k): a key seen once is a boundary face.
-    struct FaceRef
-    {
-        FaceKey key;
-        int cell, k;
-    };
-    std::vector<FaceRef> faces;
-    faces.reserve(m.nCells() * nv);
-    for (std::size_t c = 0; c < m.nCells(); ++c)
-        for (int k = 0; k < nv; ++k)
-        {
-            int idx[3] = {-1, -1, -1}, n = 0;
-            for (int j = 0; j < nv; ++j)
-                if (j != k)
-                    idx[n++] = m.cells[nv * c + j];
-            faces.push_back({faceKey(idx, m.dim), int(c), k});
-        }
-    std::sort(faces.begin(), faces.end(), [](const FaceRef& a, const FaceRef& b) { return a.key < b.key; });
-    m.cellFaceGroup.assign(m.nCells() * nv, -1);
-    for (std::size_t i = 0; i < faces.size();)
-    {
-        std::size_t j = i + 1;
-        while (j < faces.size() && faces[j].key == faces[i].key)
-            ++j;
-        if (j - i > 2)
-            throw InputError(source + ": a face is shared by more than two elements (element " +
-                             std::to_string(m.cellTag[faces[i].cell]) + ")");
-        if (j - i == 1)
-        {
-            auto it = boundaryFace.find(faces[i].key);
-            if (it == boundaryFace.end())
-            {
-                std::string nodes;
-                for (int k = 0; k < m.dim; ++k)
-                    nodes += " " + std::to_string(nodeTags[faces[i].key[k]]);
-                throw InputError(source + ": boundary face (nodes" + nodes + ") of element " +
-                                 std::to_string(m.cellTag[faces[i].cell]) +
-                                 " is in no boundary physical group; name every boundary in the geometry");
-            }
-            m.cellFaceGroup[nv * faces[i].cell + faces[i].k] = it->second;
-        }
-        i = j;
-    }
+    const std::map<FaceKey, int> boundaryFace = readBoundaryGroups(m, index);
+    assignFaceGroups(source, m, nodeTags, boundaryFace);
 }
 
 //! Interleave the low 21 bits of three integers (Morton / Z-order key).

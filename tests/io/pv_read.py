@@ -1,7 +1,8 @@
-"""Check that ParaView reads an XdmfWriter collection: pvpython pv_read.py <collection.xmf> <cell field>.
+"""Check that ParaView reads an XdmfWriter collection: pvpython pv_read.py <collection.xmf> <field> [cell|node].
 
-Loads the last time step, prints the number of cells and the min/max of the cell field (magnitude for
-vectors) and exits non-zero if the file cannot be read or the field is missing or empty.
+Loads the last time step, prints the number of cells and points and the min/max of the field (cell-centred by
+default, node-centred with "node"; magnitude for vectors) and exits non-zero if the file cannot be read or the
+field is missing or empty.
 Needs Debian's python3-paraview (provides pvpython).
 """
 import sys
@@ -20,10 +21,11 @@ def open_reader(path):
 
 
 def main():
-    if len(sys.argv) != 3:
-        print("usage: pvpython pv_read.py <collection.xmf> <cell field>", file=sys.stderr)
+    if len(sys.argv) not in (3, 4) or (len(sys.argv) == 4 and sys.argv[3] not in ("cell", "node")):
+        print("usage: pvpython pv_read.py <collection.xmf> <field> [cell|node]", file=sys.stderr)
         return 2
     path, field = sys.argv[1], sys.argv[2]
+    center = sys.argv[3] if len(sys.argv) == 4 else "cell"
     name, reader = open_reader(path)
     times = list(reader.TimestepValues)
     if not times:
@@ -33,15 +35,17 @@ def main():
     merged = MergeBlocks(Input=reader)
     merged.UpdatePipeline(times[-1])
     data = servermanager.Fetch(merged)
-    array = data.GetCellData().GetArray(field) if data is not None else None
+    attributes = None if data is None else data.GetPointData() if center == "node" else data.GetCellData()
+    array = attributes.GetArray(field) if attributes is not None else None
     ncells = data.GetNumberOfCells() if data is not None else 0
+    npoints = data.GetNumberOfPoints() if data is not None else 0
     if array is None or array.GetNumberOfTuples() == 0 or ncells == 0:
-        print("pv_read: cell field '%s' missing or empty in %s (reader %s, cells %d)" % (field, path, name, ncells),
+        print("pv_read: %s field '%s' missing or empty in %s (reader %s, cells %d)" % (center, field, path, name, ncells),
               file=sys.stderr)
         return 1
     lo, hi = array.GetRange(0 if array.GetNumberOfComponents() == 1 else -1)
-    print("pv_read: reader=%s steps=%d time=%g cells=%d %s min=%.17g max=%.17g"
-          % (name, len(times), times[-1], ncells, field, lo, hi))
+    print("pv_read: reader=%s steps=%d time=%g cells=%d points=%d %s %s min=%.17g max=%.17g"
+          % (name, len(times), times[-1], ncells, npoints, center, field, lo, hi))
     return 0
 
 
