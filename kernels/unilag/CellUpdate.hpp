@@ -27,8 +27,7 @@ struct UpdateCheck
 
 /*! The state the subcell forces of a step are computed from, if it is not the state being updated: at second order
  *  the midpoint state, its configuration, shear stress and reconstruction (the corrector of the midpoint rule). */
-template <int D>
-struct CellFlux
+template <int D> struct CellFlux
 {
     ConstField state;      //!< flux state (velocity)
     ConstField aux;        //!< its pressure and impedance
@@ -38,20 +37,18 @@ struct CellFlux
 };
 
 //! Columns of a stored stage's rates (owned cells): what the forces and the heat fluxes give, times the mass.
-template <int D, class P>
-struct RateLayout
+template <int D, class P> struct RateLayout
 {
-    static constexpr int momentum = 0;        //!< m dv/dt = sum_r f_ri, D columns (2b)
-    static constexpr int power = D;           //!< m dE/dt = sum_r f_ri . v_r (2c)
-    static constexpr int heat = D + 1;        //!< heat: m dE/dt, then m dJ/dt (D columns) of the fluxes (2.3)
+    static constexpr int momentum = 0; //!< m dv/dt = sum_r f_ri, D columns (2b)
+    static constexpr int power = D;    //!< m dE/dt = sum_r f_ri . v_r (2c)
+    static constexpr int heat = D + 1; //!< heat: m dE/dt, then m dJ/dt (D columns) of the fluxes (2.3)
     static constexpr int ncomp = P::heat ? 2 * D + 2 : D + 1;
 };
 
 /*! \brief The rates of cell i from its subcell forces f_ri = T_i(x_r) c_ri + M_ri (v_r - v_i(x_r)) (2.2): the flux
  *  state's pressure, stress and velocity at the nodes (reconstructed at second order), its corner vectors, and the
  *  node velocities of the nodal solve for it. */
-template <int D, class P>
-struct SubcellForces
+template <int D, class P> struct SubcellForces
 {
     MeshView<D> mesh;
     ConstField state, aux, stress; //!< flux state, its EOS and shear stress (strain)
@@ -85,8 +82,7 @@ struct SubcellForces
 
 /*! Stored rates of up to K stages, combined with weights: sum_k w_k R_k(i, offset + c). With one stage of weight 1
  *  it returns the stored rate itself, bit for bit. */
-template <int K>
-struct StageSum
+template <int K> struct StageSum
 {
     ConstField rate[K];
     double weight[K] = {};
@@ -103,8 +99,7 @@ struct StageSum
 };
 
 //! Subcell-force rates of stored stages, combined (a StageSum over the RateLayout columns momentum and power).
-template <int D, int K>
-struct StoredForces
+template <int D, int K> struct StoredForces
 {
     StageSum<K> sum;
     KOKKOS_INLINE_FUNCTION void operator()(const LO i, Vec<D>& force, double& power) const

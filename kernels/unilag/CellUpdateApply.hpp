@@ -29,7 +29,7 @@ UpdateCheck applyUpdate(const MeshView<D>& mesh, const ConstField& state, const 
     auto corner = geom.corner;
     auto volume = geom.volume;
     const bool storeNew = geomNew.volume.extent(0) > 0;
-    auto update = KOKKOS_LAMBDA(const LO i, double (&ext)[4])
+    auto update = KOKKOS_LAMBDA(const LO i, double(&ext)[4])
     {
         Vec<D> xm[NV], xn[NV];
         for (int k = 0; k < NV; ++k)
@@ -97,7 +97,7 @@ UpdateCheck applyUpdate(const MeshView<D>& mesh, const ConstField& state, const 
         ext[0] = Kokkos::Experimental::fmin(ext[0], ratio);
         ext[1] = Kokkos::Experimental::fmin(ext[1], c2);
         ext[2] = Kokkos::Experimental::fmin(ext[2], -Kokkos::Experimental::fabs(mass(i) * omegaGcl - sNew.volume) /
-                                                         sNew.volume);
+                                                        sNew.volume);
         if (ratio <= 0.0 || c2 <= 0.0)
             ext[3] = Kokkos::Experimental::fmin(ext[3], double(i));
     };

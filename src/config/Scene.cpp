@@ -53,8 +53,8 @@ void readStrainRelaxation(ConfigNode& m, MaterialSpec& spec)
     for (const auto& law : kStrainLaws)
         for (const auto& k : law.keys)
             if (law.law != spec.strainLaw && st.has(k))
-                st.fail(k, "belongs to law '" + law.name + "', not to law '" + lawName + "' (key '" +
-                               st.join("law") + "')");
+                st.fail(k, "belongs to law '" + law.name + "', not to law '" + lawName + "' (key '" + st.join("law") +
+                               "')");
 
     if (spec.strainLaw == RelaxationLaw::Fluid)
     {
@@ -66,8 +66,8 @@ void readStrainRelaxation(ConfigNode& m, MaterialSpec& spec)
         spec.tau1 = 0.0;
     }
     else if (!(spec.shearSpeed > 0.0))
-        m.fail("shear_sound_speed", "strain relaxation law '" + lawName + "' needs a shear sound speed > 0, found " +
-                                        num(spec.shearSpeed));
+        m.fail("shear_sound_speed",
+               "strain relaxation law '" + lawName + "' needs a shear sound speed > 0, found " + num(spec.shearSpeed));
 
     if (spec.strainLaw == RelaxationLaw::Viscous)
     {
@@ -152,6 +152,211 @@ MaterialSpec readMaterial(ConfigNode& m)
     return spec;
 }
 
+//! mesh: a .geo to mesh at a size, or a .msh to read.
+void readMeshSection(ConfigNode& root, Scene& s)
+{
+    ConfigNode mesh = root.sub("mesh", true);
+    s.geometry = resolvePath(s.directory, mesh.text("geometry", ""));
+    s.meshFile = resolvePath(s.directory, mesh.text("file", ""));
+    if (s.geometry.empty() == s.meshFile.empty())
+        mesh.fail("geometry", "give exactly one of 'geometry' (a .geo to mesh) and 'file' (a .msh to read)");
+    if (!s.geometry.empty())
+    {
+        s.meshSize = mesh.positive("size", 0.0, true);
+        if (!fs::exists(s.geometry))
+            mesh.fail("geometry", "file not found: " + s.geometry);
+    }
+    else if (!fs::exists(s.meshFile))
+        mesh.fail("file", "file not found: " + s.meshFile);
+    mesh.rejectUnknown();
+}
+
+//! materials: at least one.
+void readMaterials(ConfigNode& root, Scene& s)
+{
+    ConfigNode mats = root.sub("materials", true);
+    for (const auto& name : mats.keys())
+    {
+        ConfigNode m = mats.sub(name);
+        const MaterialSpec spec = readMaterial(m);
+        s.materials[name] = spec;
+    }
+    if (s.materials.empty())
+        root.fail("materials", "at least one material is required");
+}
+
+//! regions: the initial state of each gmsh physical group of cells.
+void readRegions(ConfigNode& root, Scene& s)
+{
+    ConfigNode regions = root.sub("regions", true);
+    for (const auto& name : regions.keys())
+    {
+        ConfigNode r = regions.sub(name);
+        RegionSpec spec;
+        spec.material = r.text("material", "", true);
+        if (!s.materials.count(spec.material))
+            r.fail("material", "unknown material '" + spec.material + "' (not in 'materials')");
+        spec.density = r.expression("density", true);
+        if (spec.density.isConstant() && !(spec.density.value > 0.0))
+            r.fail("density", "must be positive, found " + num(spec.density.value));
+        const bool p = r.has("pressure"), e = r.has("specific_internal_energy");
+        if (p == e)
+            r.fail("pressure", "give exactly one of 'pressure' and 'specific_internal_energy'");
+        spec.hasPressure = p;
+        if (p)
+            spec.pressure = r.expression("pressure", true);
+        else
+            spec.internalEnergy = r.expression("specific_internal_energy", true);
+        const Expr& th = p ? spec.pressure : spec.internalEnergy;
+        if (th.isConstant() && !(th.value >= 0.0))
+            r.fail(p ? "pressure" : "specific_internal_energy", "must be non-negative");
+        if (r.has("velocity"))
+        {
+            auto v = r.expressions("velocity");
+            spec.velocityComponents = int(v.size());
+            for (std::size_t d = 0; d < v.size(); ++d)
+                spec.velocity[d] = v[d];
+        }
+        r.rejectUnknown();
+        s.regions[name] = spec;
+    }
+    if (s.regions.empty())
+        root.fail("regions", "at least one region (a gmsh physical group of cells) is required");
+}
+
+//! boundaries: the condition on each gmsh physical group of faces.
+void readBoundaries(ConfigNode& root, Scene& s)
+{
+    ConfigNode bcs = root.sub("boundaries", true);
+    for (const auto& name : bcs.keys())
+    {
+        ConfigNode b = bcs.sub(name);
+        BoundarySpec spec;
+        spec.type = b.option<BoundaryKind>("type", "",
+                                           {{"free", BoundaryKind::Free},
+                                            {"slip_wall", BoundaryKind::SlipWall},
+                                            {"symmetry", BoundaryKind::Symmetry},
+                                            {"velocity", BoundaryKind::Velocity},
+                                            {"pressure", BoundaryKind::Pressure},
+                                            {"traction", BoundaryKind::Traction}},
+                                           true);
+        const std::string typeName = b.text("type", "");
+        // the value key of each type is its name; a value key of another type is a mistake
+        for (const char* other : {"velocity", "pressure", "traction"})
+            if (typeName != other && b.has(other))
+                b.fail(other, std::string("only a boundary of type '") + other + "' takes '" + other +
+                                  "', this one is '" + typeName + "'");
+        if (spec.type == BoundaryKind::Velocity)
+        {
+            auto v = b.vector("velocity", true);
+            for (std::size_t d = 0; d < v.size(); ++d)
+                spec.velocity[d] = v[d];
+        }
+        if (spec.type == BoundaryKind::Pressure)
+            spec.pressure = b.expression("pressure", true);
+        if (spec.type == BoundaryKind::Traction)
+        {
+            auto v = b.vector("traction", true);
+            if (v.size() < 2)
+                b.fail("traction", "expected a traction vector of 2 or 3 numbers, found " + std::to_string(v.size()));
+            for (std::size_t d = 0; d < v.size(); ++d)
+                if (!std::isfinite(v[d]))
+                    b.fail("traction", "must be finite");
+            for (std::size_t d = 0; d < v.size(); ++d)
+                spec.traction[d] = v[d];
+        }
+        spec.thermal = b.option<ThermalKind>(
+            "thermal", "adiabatic", {{"adiabatic", ThermalKind::Adiabatic}, {"isothermal", ThermalKind::Isothermal}});
+        if (spec.thermal == ThermalKind::Isothermal)
+            spec.temperature = b.positive("temperature", 0.0, true);
+        else if (b.has("temperature"))
+            b.fail("temperature", "only an isothermal boundary takes a temperature (give 'thermal: isothermal')");
+        b.rejectUnknown();
+        s.boundaries[name] = spec;
+    }
+}
+
+//! energy_deposit: a point release of energy.
+void readDeposit(ConfigNode& root, Scene& s)
+{
+    ConfigNode dep = root.sub("energy_deposit");
+    s.hasDeposit = true;
+    auto pos = dep.vector("position", true);
+    for (std::size_t d = 0; d < pos.size(); ++d)
+        s.depositPosition[d] = pos[d];
+    s.depositEnergy = dep.positive("energy", 0.0, true);
+    dep.rejectUnknown();
+}
+
+//! time: end, CFL, step limits.
+void readTime(ConfigNode& root, Scene& s)
+{
+    ConfigNode t = root.sub("time", true);
+    s.endTime = t.positive("end", 0.0, true);
+    s.cfl = t.positive("cfl", s.cfl);
+    if (s.cfl > 1.0)
+        t.fail("cfl", "must be in (0, 1], found " + num(s.cfl));
+    s.maxVolumeChange = t.positive("max_volume_change", s.maxVolumeChange);
+    s.initialTimeStep = t.nonNegative("initial_dt", 0.0);
+    s.maxGrowth = t.positive("max_growth", s.maxGrowth);
+    if (s.maxGrowth < 1.0)
+        t.fail("max_growth", "must be >= 1");
+    s.maxSteps = t.integer("max_steps", s.maxSteps, 1, 2000000000L);
+    s.maxRetries = int(t.integer("max_retries", s.maxRetries, 0, 60));
+    t.rejectUnknown();
+}
+
+//! scheme: order, limiter, Picard loop.
+void readScheme(ConfigNode& root, Scene& s)
+{
+    ConfigNode sch = root.sub("scheme");
+    s.picardTolerance = sch.positive("picard_tolerance", s.picardTolerance);
+    s.picardMaxIterations = int(sch.integer("picard_max_iterations", s.picardMaxIterations, 1, 1000000));
+    s.order = int(sch.integer("order", s.order, 1, 2));
+    s.limiter = sch.option<Limiter>("limiter", "barth_jespersen",
+                                    {{"barth_jespersen", Limiter::BarthJespersen},
+                                     {"vertex_based", Limiter::VertexBased},
+                                     {"none", Limiter::None}});
+    sch.rejectUnknown();
+}
+
+//! output: folder, interval.
+void readOutput(ConfigNode& root, Scene& s)
+{
+    ConfigNode o = root.sub("output");
+    s.outputDirectory = o.text("directory", "output/" + s.name);
+    if (s.outputDirectory.empty())
+        o.fail("directory", "must not be empty");
+    s.outputInterval = o.nonNegative("interval", 0.0);
+    s.writeOutput = o.boolean("enabled", true);
+    o.rejectUnknown();
+}
+
+//! exact: the exact solution and the --check bounds.
+void readExact(ConfigNode& root, Scene& s)
+{
+    ConfigNode x = root.sub("exact");
+    s.exactSolution =
+        x.option<ExactSolution>("solution", "none", {{"none", ExactSolution::None}, {"sedov", ExactSolution::Sedov}});
+    const bool sedov = s.exactSolution == ExactSolution::Sedov;
+    s.exactTable = resolvePath(s.directory, x.text("table", "", sedov));
+    if (sedov && !fs::exists(s.exactTable))
+        x.fail("table", "file not found: " + s.exactTable);
+    s.exactShockRadius = x.positive("shock_radius", 1.0, sedov);
+    s.exactTime = x.positive("time", 1.0);
+    if (x.has("boundary_radius"))
+    {
+        ConfigNode radii = x.sub("boundary_radius");
+        for (const auto& group : radii.keys())
+            s.boundaryRadius[group] = radii.positive(group, 0.0, true);
+        radii.rejectUnknown();
+    }
+    s.radiusTolerance = x.nonNegative("radius_tolerance", 0.0);
+    s.maxL1Density = x.nonNegative("max_l1_density", 0.0);
+    s.shockRadiusTolerance = x.nonNegative("shock_radius_tolerance", 0.0);
+    x.rejectUnknown();
+}
+
 } // namespace
 
 Scene readScene(const std::string& file, const std::vector<std::string>& overrides)
@@ -167,186 +372,17 @@ Scene readScene(const std::string& file, const std::vector<std::string>& overrid
     ConfigNode root(file, "", *top);
     s.name = root.text("title", s.name);
 
-    {
-        ConfigNode mesh = root.sub("mesh", true);
-        s.geometry = resolvePath(s.directory, mesh.text("geometry", ""));
-        s.meshFile = resolvePath(s.directory, mesh.text("file", ""));
-        if (s.geometry.empty() == s.meshFile.empty())
-            mesh.fail("geometry", "give exactly one of 'geometry' (a .geo to mesh) and 'file' (a .msh to read)");
-        if (!s.geometry.empty())
-        {
-            s.meshSize = mesh.positive("size", 0.0, true);
-            if (!fs::exists(s.geometry))
-                mesh.fail("geometry", "file not found: " + s.geometry);
-        }
-        else if (!fs::exists(s.meshFile))
-            mesh.fail("file", "file not found: " + s.meshFile);
-        mesh.rejectUnknown();
-    }
-    {
-        ConfigNode mats = root.sub("materials", true);
-        for (const auto& name : mats.keys())
-        {
-            ConfigNode m = mats.sub(name);
-            const MaterialSpec spec = readMaterial(m);
-            s.materials[name] = spec;
-        }
-        if (s.materials.empty())
-            root.fail("materials", "at least one material is required");
-    }
-    {
-        ConfigNode regions = root.sub("regions", true);
-        for (const auto& name : regions.keys())
-        {
-            ConfigNode r = regions.sub(name);
-            RegionSpec spec;
-            spec.material = r.text("material", "", true);
-            if (!s.materials.count(spec.material))
-                r.fail("material", "unknown material '" + spec.material + "' (not in 'materials')");
-            spec.density = r.expression("density", true);
-            if (spec.density.isConstant() && !(spec.density.value > 0.0))
-                r.fail("density", "must be positive, found " + num(spec.density.value));
-            const bool p = r.has("pressure"), e = r.has("specific_internal_energy");
-            if (p == e)
-                r.fail("pressure", "give exactly one of 'pressure' and 'specific_internal_energy'");
-            spec.hasPressure = p;
-            if (p)
-                spec.pressure = r.expression("pressure", true);
-            else
-                spec.internalEnergy = r.expression("specific_internal_energy", true);
-            const Expr& th = p ? spec.pressure : spec.internalEnergy;
-            if (th.isConstant() && !(th.value >= 0.0))
-                r.fail(p ? "pressure" : "specific_internal_energy", "must be non-negative");
-            if (r.has("velocity"))
-            {
-                auto v = r.expressions("velocity");
-                spec.velocityComponents = int(v.size());
-                for (std::size_t d = 0; d < v.size(); ++d)
-                    spec.velocity[d] = v[d];
-            }
-            r.rejectUnknown();
-            s.regions[name] = spec;
-        }
-        if (s.regions.empty())
-            root.fail("regions", "at least one region (a gmsh physical group of cells) is required");
-    }
-    {
-        ConfigNode bcs = root.sub("boundaries", true);
-        for (const auto& name : bcs.keys())
-        {
-            ConfigNode b = bcs.sub(name);
-            BoundarySpec spec;
-            spec.type = b.option<BoundaryKind>("type", "",
-                                               {{"free", BoundaryKind::Free},
-                                                {"slip_wall", BoundaryKind::SlipWall},
-                                                {"symmetry", BoundaryKind::Symmetry},
-                                                {"velocity", BoundaryKind::Velocity},
-                                                {"pressure", BoundaryKind::Pressure},
-                                                {"traction", BoundaryKind::Traction}},
-                                               true);
-            const std::string typeName = b.text("type", "");
-            // the value key of each type is its name; a value key of another type is a mistake
-            for (const char* other : {"velocity", "pressure", "traction"})
-                if (typeName != other && b.has(other))
-                    b.fail(other, std::string("only a boundary of type '") + other + "' takes '" + other +
-                                      "', this one is '" + typeName + "'");
-            if (spec.type == BoundaryKind::Velocity)
-            {
-                auto v = b.vector("velocity", true);
-                for (std::size_t d = 0; d < v.size(); ++d)
-                    spec.velocity[d] = v[d];
-            }
-            if (spec.type == BoundaryKind::Pressure)
-                spec.pressure = b.expression("pressure", true);
-            if (spec.type == BoundaryKind::Traction)
-            {
-                auto v = b.vector("traction", true);
-                if (v.size() < 2)
-                    b.fail("traction", "expected a traction vector of 2 or 3 numbers, found " + std::to_string(v.size()));
-                for (std::size_t d = 0; d < v.size(); ++d)
-                    if (!std::isfinite(v[d]))
-                        b.fail("traction", "must be finite");
-                for (std::size_t d = 0; d < v.size(); ++d)
-                    spec.traction[d] = v[d];
-            }
-            spec.thermal = b.option<ThermalKind>(
-                "thermal", "adiabatic", {{"adiabatic", ThermalKind::Adiabatic}, {"isothermal", ThermalKind::Isothermal}});
-            if (spec.thermal == ThermalKind::Isothermal)
-                spec.temperature = b.positive("temperature", 0.0, true);
-            else if (b.has("temperature"))
-                b.fail("temperature", "only an isothermal boundary takes a temperature (give 'thermal: isothermal')");
-            b.rejectUnknown();
-            s.boundaries[name] = spec;
-        }
-    }
+    readMeshSection(root, s);
+    readMaterials(root, s);
+    readRegions(root, s);
+    readBoundaries(root, s);
     if (root.has("energy_deposit"))
-    {
-        ConfigNode dep = root.sub("energy_deposit");
-        s.hasDeposit = true;
-        auto pos = dep.vector("position", true);
-        for (std::size_t d = 0; d < pos.size(); ++d)
-            s.depositPosition[d] = pos[d];
-        s.depositEnergy = dep.positive("energy", 0.0, true);
-        dep.rejectUnknown();
-    }
-    {
-        ConfigNode t = root.sub("time", true);
-        s.endTime = t.positive("end", 0.0, true);
-        s.cfl = t.positive("cfl", s.cfl);
-        if (s.cfl > 1.0)
-            t.fail("cfl", "must be in (0, 1], found " + num(s.cfl));
-        s.maxVolumeChange = t.positive("max_volume_change", s.maxVolumeChange);
-        s.initialTimeStep = t.nonNegative("initial_dt", 0.0);
-        s.maxGrowth = t.positive("max_growth", s.maxGrowth);
-        if (s.maxGrowth < 1.0)
-            t.fail("max_growth", "must be >= 1");
-        s.maxSteps = t.integer("max_steps", s.maxSteps, 1, 2000000000L);
-        s.maxRetries = int(t.integer("max_retries", s.maxRetries, 0, 60));
-        t.rejectUnknown();
-    }
-    {
-        ConfigNode sch = root.sub("scheme");
-        s.picardTolerance = sch.positive("picard_tolerance", s.picardTolerance);
-        s.picardMaxIterations = int(sch.integer("picard_max_iterations", s.picardMaxIterations, 1, 1000000));
-        s.order = int(sch.integer("order", s.order, 1, 2));
-        s.limiter = sch.option<Limiter>("limiter", "barth_jespersen",
-                                        {{"barth_jespersen", Limiter::BarthJespersen},
-                                         {"vertex_based", Limiter::VertexBased},
-                                         {"none", Limiter::None}});
-        sch.rejectUnknown();
-    }
-    {
-        ConfigNode o = root.sub("output");
-        s.outputDirectory = o.text("directory", "output/" + s.name);
-        if (s.outputDirectory.empty())
-            o.fail("directory", "must not be empty");
-        s.outputInterval = o.nonNegative("interval", 0.0);
-        s.writeOutput = o.boolean("enabled", true);
-        o.rejectUnknown();
-    }
+        readDeposit(root, s);
+    readTime(root, s);
+    readScheme(root, s);
+    readOutput(root, s);
     if (root.has("exact"))
-    {
-        ConfigNode x = root.sub("exact");
-        s.exactSolution = x.option<ExactSolution>("solution", "none",
-                                                  {{"none", ExactSolution::None}, {"sedov", ExactSolution::Sedov}});
-        const bool sedov = s.exactSolution == ExactSolution::Sedov;
-        s.exactTable = resolvePath(s.directory, x.text("table", "", sedov));
-        if (sedov && !fs::exists(s.exactTable))
-            x.fail("table", "file not found: " + s.exactTable);
-        s.exactShockRadius = x.positive("shock_radius", 1.0, sedov);
-        s.exactTime = x.positive("time", 1.0);
-        if (x.has("boundary_radius"))
-        {
-            ConfigNode radii = x.sub("boundary_radius");
-            for (const auto& group : radii.keys())
-                s.boundaryRadius[group] = radii.positive(group, 0.0, true);
-            radii.rejectUnknown();
-        }
-        s.radiusTolerance = x.nonNegative("radius_tolerance", 0.0);
-        s.maxL1Density = x.nonNegative("max_l1_density", 0.0);
-        s.shockRadiusTolerance = x.nonNegative("shock_radius_tolerance", 0.0);
-        x.rejectUnknown();
-    }
+        readExact(root, s);
     root.rejectUnknown();
     s.resolved = *top;
     return s;

@@ -31,7 +31,8 @@ enum class EosKind
     NeoHookean
 };
 
-//! Strain relaxation laws of the scene (docs/gpr-model.md 1.4); the kernels see StrainNone, StrainConstant or StrainPlastic.
+//! Strain relaxation laws of the scene (docs/gpr-model.md 1.4); the kernels see StrainNone, StrainConstant or
+//! StrainPlastic.
 enum class RelaxationLaw
 {
     Fluid,    //!< no shear stress
@@ -66,23 +67,23 @@ enum class ExactSolution
 struct MaterialSpec
 {
     EosKind eos = EosKind::IdealGas; //!< docs/gpr-model.md 1.3
-    double gamma = 1.4;             //!< ideal gas
+    double gamma = 1.4;              //!< ideal gas
     double cv = 1.0;
     double rho0 = 1.0, c0 = 1.0, Gamma0 = 0.0, s = 0.0; //!< Mie-Grueneisen (rho0 also neo-Hookean)
-    double csh = 0.0;                                    //!< neo-Hookean modulus rho0 csh^2
+    double csh = 0.0;                                   //!< neo-Hookean modulus rho0 csh^2
 
     // GPR constitutive model (docs/gpr-model.md 1.2, 1.4). rho0 above is also the reference density of G_e (at rest
     // G_e = (rho/rho0)^{2/3} I) and of the relaxation laws; for an ideal gas it defaults to 1.
-    double shearSpeed = 0.0;          //!< c_sh >= 0 (key shear_sound_speed); 0 with law "fluid"
+    double shearSpeed = 0.0; //!< c_sh >= 0 (key shear_sound_speed); 0 with law "fluid"
     RelaxationLaw strainLaw = RelaxationLaw::Fluid;
-    double tau1 = 0.0;                //!< relaxation time: constant law as given; viscous 6 mu/(rho0 csh^2); elastic +inf
-    double viscosity = 0.0;           //!< viscous law: mu
+    double tau1 = 0.0;      //!< relaxation time: constant law as given; viscous 6 mu/(rho0 csh^2); elastic +inf
+    double viscosity = 0.0; //!< viscous law: mu
     double tau10 = 0.0, yieldStress = 0.0, exponent = 0.0; //!< plastic law tau1 = tau10 (sigma_Y / sigma_bar)^n
-    bool heatConduction = false;      //!< key heat_conduction present
-    double alpha = 0.0;               //!< heat: alpha
-    double tau2 = 0.0;                //!< heat: relaxation time (given, or from kappa: tau2 = kappa rho0/(alpha^2 theta0))
-    double kappa = 0.0;               //!< heat: Fourier conductivity (given, or from tau2)
-    double theta0 = 0.0;              //!< heat: reference temperature
+    bool heatConduction = false;                           //!< key heat_conduction present
+    double alpha = 0.0;                                    //!< heat: alpha
+    double tau2 = 0.0;   //!< heat: relaxation time (given, or from kappa: tau2 = kappa rho0/(alpha^2 theta0))
+    double kappa = 0.0;  //!< heat: Fourier conductivity (given, or from tau2)
+    double theta0 = 0.0; //!< heat: reference temperature
 };
 
 struct RegionSpec
@@ -102,8 +103,8 @@ struct BoundarySpec
     std::array<double, 3> velocity{0.0, 0.0, 0.0};
     Expr pressure; //!< imposed pressure (normal traction -p n): a constant or an expression of t
     std::array<double, 3> traction{0.0, 0.0, 0.0}; //!< imposed traction vector T n (type traction)
-    ThermalKind thermal = ThermalKind::Adiabatic; //!< adiabatic: q . n = 0
-    double temperature = 0.0;          //!< isothermal wall temperature (> 0)
+    ThermalKind thermal = ThermalKind::Adiabatic;  //!< adiabatic: q . n = 0
+    double temperature = 0.0;                      //!< isothermal wall temperature (> 0)
 };
 
 struct Scene
@@ -118,8 +119,8 @@ struct Scene
     double meshSize = 0.0;
 
     std::map<std::string, MaterialSpec> materials;
-    std::map<std::string, RegionSpec> regions;       //!< by gmsh physical group name (cells)
-    std::map<std::string, BoundarySpec> boundaries;  //!< by gmsh physical group name (faces)
+    std::map<std::string, RegionSpec> regions;      //!< by gmsh physical group name (cells)
+    std::map<std::string, BoundarySpec> boundaries; //!< by gmsh physical group name (faces)
 
     bool hasDeposit = false;
     std::array<double, 3> depositPosition{0.0, 0.0, 0.0};
@@ -144,11 +145,11 @@ struct Scene
     bool writeOutput = true;
 
     ExactSolution exactSolution = ExactSolution::None;
-    std::string exactTable;             //!< resolved path of a radial profile (csv)
-    double exactShockRadius = 0.0;      //!< at exactTime
-    double exactTime = 1.0;             //!< time of the tabulated profile (self-similar scaling to other times)
-    double maxL1Density = 0.0;          //!< --check bound, 0 = none
-    double shockRadiusTolerance = 0.0;  //!< --check bound (relative), 0 = none
+    std::string exactTable;            //!< resolved path of a radial profile (csv)
+    double exactShockRadius = 0.0;     //!< at exactTime
+    double exactTime = 1.0;            //!< time of the tabulated profile (self-similar scaling to other times)
+    double maxL1Density = 0.0;         //!< --check bound, 0 = none
+    double shockRadiusTolerance = 0.0; //!< --check bound (relative), 0 = none
     std::map<std::string, double> boundaryRadius; //!< exact mean distance from the origin of a boundary group
     double radiusTolerance = 0.0;                 //!< --check bound on it (relative), 0 = none
 

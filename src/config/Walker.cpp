@@ -30,14 +30,12 @@ std::size_t editDistance(const std::string& a, const std::string& b)
     return prev[b.size()];
 }
 
-
 bool parseNumber(const std::string& s, double& out)
 {
     char* end = nullptr;
     out = std::strtod(s.c_str(), &end);
     return !s.empty() && end && *end == '\0';
 }
-
 
 std::string entryText(const Teuchos::ParameterEntry& e)
 {
@@ -71,15 +69,16 @@ void applyOverride(Teuchos::ParameterList& root, const std::string& file, const 
     }
     const std::string key = path.substr(start);
     double d;
-    if (list->isType<std::string>(key) || (!parseNumber(value, d) && value != "true" && value != "false" &&
-                                             (value.empty() || value.front() != '[')))
+    if (list->isType<std::string>(key) ||
+        (!parseNumber(value, d) && value != "true" && value != "false" && (value.empty() || value.front() != '[')))
         list->set(key, value);
     else if (value == "true" || value == "false")
         list->set(key, value == "true");
     else if (!value.empty() && value.front() == '[')
     {
         Teuchos::Array<double> arr;
-        std::string body = value.substr(1, value.find(']') == std::string::npos ? std::string::npos : value.find(']') - 1);
+        std::string body =
+            value.substr(1, value.find(']') == std::string::npos ? std::string::npos : value.find(']') - 1);
         std::stringstream ss(body);
         std::string item;
         while (std::getline(ss, item, ','))
@@ -98,7 +97,6 @@ void applyOverride(Teuchos::ParameterList& root, const std::string& file, const 
         list->set(key, d);
 }
 
-
 } // namespace
 
 std::string num(double v)
@@ -108,7 +106,6 @@ std::string num(double v)
     return os.str();
 }
 
-
 std::string resolvePath(const std::string& dir, const std::string& p)
 {
     if (p.empty())
@@ -116,7 +113,6 @@ std::string resolvePath(const std::string& dir, const std::string& p)
     const fs::path path(p);
     return (path.is_absolute() ? path : fs::path(dir) / path).lexically_normal().string();
 }
-
 
 Teuchos::RCP<Teuchos::ParameterList> readYaml(const std::string& file, const std::string& top,
                                               const std::vector<std::string>& overrides)
@@ -169,7 +165,6 @@ void ConfigNode::missing(const std::string& key, const std::string& what) const
     const std::string hint = best.empty() ? "" : "; found '" + join(best) + "': did you mean '" + join(key) + "'?";
     fail(key, "missing " + what + hint);
 }
-
 
 ConfigNode ConfigNode::sub(const std::string& key, bool required)
 {

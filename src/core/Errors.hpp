@@ -19,9 +19,9 @@ class InputError : public std::runtime_error
 enum ExitCode : int
 {
     ExitOk = 0,
-    ExitInput = 2,    //!< bad scene or mesh
-    ExitCheck = 3,    //!< --check failed
-    ExitUnstable = 4  //!< the run went unstable and was stopped
+    ExitInput = 2,   //!< bad scene or mesh
+    ExitCheck = 3,   //!< --check failed
+    ExitUnstable = 4 //!< the run went unstable and was stopped
 };
 
 } // namespace unilag

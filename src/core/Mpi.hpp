@@ -27,8 +27,7 @@ double allMin(MPI_Comm comm, double v);
 double allMax(MPI_Comm comm, double v);
 //! Sums n values in place over the ranks.
 void allSum(MPI_Comm comm, double* v, int n);
-template <int N>
-void allSum(MPI_Comm comm, double (&v)[N])
+template <int N> void allSum(MPI_Comm comm, double (&v)[N])
 {
     allSum(comm, v, N);
 }

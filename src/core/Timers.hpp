@@ -31,7 +31,7 @@ enum class Phase : int
 //! The name of a phase, as summary.json and the profiling regions write it.
 inline const char* phaseName(Phase p)
 {
-    static const char* names[] = {"geometry",     "eos",         "nodal_solve", "time_step", "reconstruction",
+    static const char* names[] = {"geometry",      "eos",         "nodal_solve", "time_step", "reconstruction",
                                   "strain_update", "heat_fluxes", "cell_update", "halo",      "io"};
     return names[int(p)];
 }

@@ -12,8 +12,7 @@ namespace unilag
  *  of the owned cells in geomNew. These become the midpoint state: its ghosts are completed, its gradients
  *  reconstructed (limited, exchanged), and the nodes solved with the reconstructed values at t^n + dt/2 (boundary
  *  pressures at that time). Heat variants: the midpoint Rusanov fluxes. Collective. */
-template <int D, class P>
-void GprOperator<D, P>::midpointState(double t, double dt)
+template <int D, class P> void GprOperator<D, P>::midpointState(double t, double dt)
 {
     auto& md = md_;
     md.fields.swap("state_mid", "state_new");
@@ -41,8 +40,7 @@ void GprOperator<D, P>::midpointState(double t, double dt)
     if constexpr (P::heat)
     {
         ScopedTimer timer(md.timers, Phase::HeatFluxes);
-        unilag::heatFluxes<D, P>(md.m, md.bc, sm, md.auxMid, md.geomMid, md.cellMaterial, md.materials,
-                                 md.heatRateMid);
+        unilag::heatFluxes<D, P>(md.m, md.bc, sm, md.auxMid, md.geomMid, md.cellMaterial, md.materials, md.heatRateMid);
     }
     {
         ScopedTimer timer(md.timers, Phase::NodalSolve);
@@ -55,8 +53,7 @@ void GprOperator<D, P>::midpointState(double t, double dt)
  *  midpoint transport and an implicit relaxation over dt, v, E, omega (and J) from the midpoint forces and heat
  *  fluxes. The result is in state_new, x_new, geomNew as after a first-order step. Collective; false (with a message
  *  in failure) if the G_e update finds an inadmissible cell; check tells whether the update is admissible. */
-template <int D, class P>
-bool GprOperator<D, P>::correctorUpdate(double dt, UpdateCheck& check, std::string& failure)
+template <int D, class P> bool GprOperator<D, P>::correctorUpdate(double dt, UpdateCheck& check, std::string& failure)
 {
     auto& md = md_;
     auto x = md.read("x");

@@ -15,14 +15,13 @@ namespace unilag
 {
 
 //! Mass (sum of |T_i| / omega_i: tests the GCL), momentum, total energy, and sum m|v| over owned cells.
-template <int D, class P>
-void totals(const GprModel<D, P>& md, double (&out)[D + 3])
+template <int D, class P> void totals(const GprModel<D, P>& md, double (&out)[D + 3])
 {
     using S = StateLayout<D, P>;
     auto s = md.fields["state"].getLocalViewDevice(Tpetra::Access::ReadOnly);
     auto volume = md.geom.volume;
     auto mass = md.mass();
-    auto sum = KOKKOS_LAMBDA(const LO i, double (&acc)[D + 3])
+    auto sum = KOKKOS_LAMBDA(const LO i, double(&acc)[D + 3])
     {
         acc[0] += volume(i) / s(i, S::omega);
         double v2 = 0.0;
@@ -57,17 +56,16 @@ std::string diagnose(const GprModel<D, P>& md, const UpdateCheck& check, double 
         for (int d = 0; d < D; ++d)
             kin += 0.5 * sn(i, S::vel + d) * sn(i, S::vel + d);
         os << "cell " << dm.cellGid[i] << " (initial centroid " << c[0] << ", " << c[1] << ", " << c[2]
-           << ") at t = " << t << " after " << attempts << " halvings of dt (last dt " << dt
-           << "): volume ratio " << check.minVolumeRatio << ", specific internal energy "
-           << sn(i, S::energy) - kin << ", density " << 1.0 / sn(i, S::omega) << ", volume " << vol(i);
+           << ") at t = " << t << " after " << attempts << " halvings of dt (last dt " << dt << "): volume ratio "
+           << check.minVolumeRatio << ", specific internal energy " << sn(i, S::energy) - kin << ", density "
+           << 1.0 / sn(i, S::omega) << ", volume " << vol(i);
         local = os.str();
     }
     return mpi::firstMessage(md.comm, local);
 }
 
 //! The time step has collapsed: report the smallest cell (the mesh is tangling there).
-template <int D, class P>
-std::string collapse(const GprModel<D, P>& md, double t, double dt, long step)
+template <int D, class P> std::string collapse(const GprModel<D, P>& md, double t, double dt, long step)
 {
     const auto& dm = *md.mesh;
     auto vol = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), md.geom.volume);
@@ -84,9 +82,8 @@ std::string collapse(const GprModel<D, P>& md, double t, double dt, long step)
     if (md.rank == owner && cell >= 0)
     {
         std::ostringstream os;
-        os << "the time step collapsed to " << dt << " at t = " << t << " (step " << step
-           << "); the smallest cell is " << dm.cellGid[cell] << " with volume " << vol(cell)
-           << ": the mesh is tangling there";
+        os << "the time step collapsed to " << dt << " at t = " << t << " (step " << step << "); the smallest cell is "
+           << dm.cellGid[cell] << " with volume " << vol(cell) << ": the mesh is tangling there";
         local = os.str();
     }
     return mpi::firstMessage(md.comm, local);
@@ -115,8 +112,7 @@ std::tuple<std::vector<double>, std::vector<double>, std::vector<double>> cellRa
 }
 
 //! Mean distance from the origin of the nodes of each boundary group (shell radii: Kidder, beryllium shell).
-template <int D, class P>
-std::vector<double> boundaryRadii(const GprModel<D, P>& md)
+template <int D, class P> std::vector<double> boundaryRadii(const GprModel<D, P>& md)
 {
     const auto& dm = *md.mesh;
     const int ng = int(dm.boundaryNames.size()), nv = D + 1;
@@ -169,8 +165,7 @@ double radialL1Density(const GprModel<D, P>& md, const RadialProfile& exact, dou
 }
 
 //! Radius where the shell-averaged density falls to half-way between its peak and the ambient value.
-template <int D, class P>
-double shockRadius(const GprModel<D, P>& md, const RadialProfile& exact)
+template <int D, class P> double shockRadius(const GprModel<D, P>& md, const RadialProfile& exact)
 {
     auto [r, rho, vol] = cellRadii(md);
     double hsum[2] = {0.0, double(r.size())};

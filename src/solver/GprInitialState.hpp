@@ -33,8 +33,8 @@ struct RegionFunctions
 /*! Writes the initial state of the cells of region r into the state, mass and material rows (host views).
  *  Returns an error naming the key and the cell, "" if fine. */
 template <int D, class P, class MatV, class SV, class MH, class VH>
-std::string regionState(const GprModel<D, P>& md, std::size_t r, const MatV& mats,
-                        const SV& sh, const MH& massH, const MH& matH, const VH& vol)
+std::string regionState(const GprModel<D, P>& md, std::size_t r, const MatV& mats, const SV& sh, const MH& massH,
+                        const MH& matH, const VH& vol)
 {
     using S = StateLayout<D, P>;
     const auto& dm = *md.mesh;
@@ -107,7 +107,8 @@ void depositEnergy(const GprModel<D, P>& md, const SV& sh, const MH& massH)
     }
     long long node = bestNode;
     MPI_Bcast(&node, 1, MPI_LONG_LONG, mpi::argMinRank(md.comm, best), md.comm);
-    auto touches = [&](LO i) {
+    auto touches = [&](LO i)
+    {
         for (int k = 0; k < D + 1; ++k)
             if (dm.nodeGid[dm.cellNodesHost[(D + 1) * i + k]] == node)
                 return true;
@@ -124,8 +125,7 @@ void depositEnergy(const GprModel<D, P>& md, const SV& sh, const MH& massH)
 }
 
 //! Initial conditions, masses, materials and boundary table. Returns an error message ("" if fine). Collective.
-template <int D, class P>
-std::string initialize(GprModel<D, P>& md)
+template <int D, class P> std::string initialize(GprModel<D, P>& md)
 {
     const auto& dm = *md.mesh;
     std::string error = setupBoundaries(md);

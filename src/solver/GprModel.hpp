@@ -35,16 +35,14 @@ inline View<double*> column(MV& field, int c = 0)
 }
 
 //! The centroid of local cell i in the initial configuration.
-template <int D>
-void initialCentroid(const DistributedMesh& dm, LO i, double (&c)[3])
+template <int D> void initialCentroid(const DistributedMesh& dm, LO i, double (&c)[3])
 {
     c[0] = c[1] = c[2] = 0.0;
     for (int k = 0; k < D + 1; ++k)
         for (int d = 0; d < D; ++d)
             c[d] += dm.coords0[3 * dm.cellNodesHost[(D + 1) * i + k] + d] / (D + 1);
 }
-template <int D, class P>
-struct GprModel
+template <int D, class P> struct GprModel
 {
     using S = StateLayout<D, P>;
 
@@ -59,16 +57,16 @@ struct GprModel
     bool order2;
     Limiter limiter;
 
-    Field fnode, aux;            //!< subcell force sums at owned nodes; EOS, speeds, temperature, stress at t^n
-    Field heatRate;              //!< heat: m dE/dt and m dJ/dt of the fluxes at t^n (owned cells)
-    Field auxMid, sigmaMid;      //!< order 2: EOS and shear stress at the midpoint
-    Field heatRateMid;           //!< order 2, heat: midpoint fluxes
-    CellGeometry geom, geomNew;  //!< at t^n; the next step's (owned cells, written by the update)
-    CellGeometry geomMid;        //!< order 2: the midpoint configuration
-    View<int*> cellMaterial;     //!< the material field as integers, for the kernels
+    Field fnode, aux;           //!< subcell force sums at owned nodes; EOS, speeds, temperature, stress at t^n
+    Field heatRate;             //!< heat: m dE/dt and m dJ/dt of the fluxes at t^n (owned cells)
+    Field auxMid, sigmaMid;     //!< order 2: EOS and shear stress at the midpoint
+    Field heatRateMid;          //!< order 2, heat: midpoint fluxes
+    CellGeometry geom, geomNew; //!< at t^n; the next step's (owned cells, written by the update)
+    CellGeometry geomMid;       //!< order 2: the midpoint configuration
+    View<int*> cellMaterial;    //!< the material field as integers, for the kernels
     View<const Material*> materials;
     BoundaryView bc;
-    Kokkos::View<double* [3], MemSpace> bcValue;                            //!< bc.value, writable
+    Kokkos::View<double* [3], MemSpace> bcValue; //!< bc.value, writable
     Kokkos::View<double* [3], MemSpace>::HostMirror bcValueHost;
     std::vector<std::pair<int, std::unique_ptr<Expression>>> pressureLaws; //!< time-dependent imposed pressures
     PhaseTimers timers;

@@ -23,8 +23,7 @@
 namespace unilag
 {
 
-template <int D, class P>
-class GprOperator
+template <int D, class P> class GprOperator
 {
     using S = StateLayout<D, P>;
 
@@ -79,7 +78,7 @@ class GprOperator
     {
         ScopedTimer timer(md_.timers, Phase::HeatFluxes);
         unilag::heatFluxes<D, P>(md_.m, md_.bc, md_.read("state"), md_.aux, md_.geom, md_.cellMaterial, md_.materials,
-                         md_.heatRate);
+                                 md_.heatRate);
     }
 
     //! The largest stable step over all ranks: CFL and the volume-change bound. Collective.
@@ -87,7 +86,7 @@ class GprOperator
     {
         ScopedTimer timer(md_.timers, Phase::TimeStep);
         return mpi::allMin(md_.comm, unilag::stableTimeStep<D>(md_.m, md_.aux, md_.geom, md_.read("v_node"),
-                                                                md_.scene.cfl, md_.scene.maxVolumeChange));
+                                                               md_.scene.cfl, md_.scene.maxVolumeChange));
     }
 
     void halo(const std::string& field)
@@ -120,7 +119,7 @@ class GprOperator
     {
         auto v = md_.read("v_node");
         auto f = md_.fnode;
-        auto sum = KOKKOS_LAMBDA(const LO r, double (&acc)[D + 1])
+        auto sum = KOKKOS_LAMBDA(const LO r, double(&acc)[D + 1])
         {
             for (int d = 0; d < D; ++d)
             {

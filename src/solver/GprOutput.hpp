@@ -15,8 +15,7 @@ namespace unilag
 {
 
 //! A writer of the owned cells of the mesh, as global output node ids. Collective.
-template <int D, class P>
-std::unique_ptr<io::XdmfWriter> makeWriter(const GprModel<D, P>& md, const std::string& dir)
+template <int D, class P> std::unique_ptr<io::XdmfWriter> makeWriter(const GprModel<D, P>& md, const std::string& dir)
 {
     const auto& dm = *md.mesh;
     auto writer = std::make_unique<io::XdmfWriter>(md.comm, dir, "unilag", D);
@@ -29,8 +28,7 @@ std::unique_ptr<io::XdmfWriter> makeWriter(const GprModel<D, P>& md, const std::
 }
 
 //! Writes dump number index of the owned cells at time t. Collective.
-template <int D, class P>
-void dump(GprModel<D, P>& md, io::XdmfWriter& writer, int index, double t)
+template <int D, class P> void dump(GprModel<D, P>& md, io::XdmfWriter& writer, int index, double t)
 {
     using S = StateLayout<D, P>;
     ScopedTimer timer(md.timers, Phase::Output);
@@ -59,18 +57,16 @@ void dump(GprModel<D, P>& md, io::XdmfWriter& writer, int index, double t)
         volume[i] = vol(i);
         gid[i] = double(dm.cellGid[i]);
     }
-    std::vector<io::CellField> fields{{"density", 1, rho.data()},
-                                      {"pressure", 1, p.data()},
-                                      {"velocity", 3, vel.data()},
-                                      {"specific_internal_energy", 1, eps.data()},
-                                      {"volume", 1, volume.data()},
-                                      {"rank", 1, part.data()},
+    std::vector<io::CellField> fields{{"density", 1, rho.data()},   {"pressure", 1, p.data()},
+                                      {"velocity", 3, vel.data()},  {"specific_internal_energy", 1, eps.data()},
+                                      {"volume", 1, volume.data()}, {"rank", 1, part.data()},
                                       {"global_id", 1, gid.data()}};
     std::vector<double> mises, gdet, gdev, gten, theta, jvec;
     if constexpr (P::strain)
     {
         // von Mises stress (plastic maps), det G_e and the G_e anisotropy |dev G| / tr G
-        auto sg = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), md.fields["sigma"].getLocalViewDevice(Tpetra::Access::ReadOnly));
+        auto sg = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(),
+                                                      md.fields["sigma"].getLocalViewDevice(Tpetra::Access::ReadOnly));
         mises.resize(n);
         gdet.resize(n);
         gdev.resize(n);

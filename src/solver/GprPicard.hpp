@@ -18,8 +18,7 @@ namespace unilag
  *     (notePredictorStress). Extrapolating sigma^n instead starts about 1e-4 rho a^2 away on the Be shell (the
  *     first-order predictor and the second-order state differ by the scheme's truncation error), which cost
  *     8-18 iterations instead of 2. */
-template <int D, class P>
-void GprOperator<D, P>::startPicard(long step)
+template <int D, class P> void GprOperator<D, P>::startPicard(long step)
 {
     auto sigma = md_.write("sigma");
     auto prev = md_.write("sigma_prev");
@@ -56,16 +55,14 @@ void GprOperator<D, P>::startPicard(long step)
 }
 
 //! Second order: keep the accepted predictor's fixed point (sigma) and the one before, for startPicard.
-template <int D, class P>
-void GprOperator<D, P>::notePredictorStress()
+template <int D, class P> void GprOperator<D, P>::notePredictorStress()
 {
     md_.fields.swap("sigma_prev2", "sigma_prev");
     md_.fields.copy("sigma", "sigma_prev");
 }
 
 //! The message for a cell whose volume or G_e became inadmissible (on the rank that has it; collective).
-template <int D, class P>
-std::string GprOperator<D, P>::inadmissible(LO badCell, const std::string& where, double dt)
+template <int D, class P> std::string GprOperator<D, P>::inadmissible(LO badCell, const std::string& where, double dt)
 {
     std::string local;
     if (badCell >= 0)
@@ -78,8 +75,7 @@ std::string GprOperator<D, P>::inadmissible(LO badCell, const std::string& where
 
 /*! One Picard iteration's G_e update (strainUpdate) from the node velocities of the last nodal solve: moves the nodes
  *  to x_new, writes G^{l+1} into state_new and sigma^{l+1} into sigma_next. */
-template <int D, class P>
-PicardCheck GprOperator<D, P>::strainStep(double dt, bool midpoint)
+template <int D, class P> PicardCheck GprOperator<D, P>::strainStep(double dt, bool midpoint)
 {
     ScopedTimer timer(md_.timers, Phase::StrainUpdate);
     auto v = md_.read("v_node");
@@ -87,19 +83,18 @@ PicardCheck GprOperator<D, P>::strainStep(double dt, bool midpoint)
     moveNodes(md_.read("x"), v, dt, xn, md_.m.nNodes, D);
     if (midpoint)
         return strainUpdate<D, P>(md_.m, md_.read("state"), md_.aux, md_.geom, md_.mass(), md_.cellMaterial,
-                                md_.materials, xn, v, dt, md_.sigmaMid, md_.write("sigma_next"), md_.write("state_new"),
-                                md_.plasticHint(true), md_.read("state_mid"), md_.geomMid);
-    return strainUpdate<D, P>(md_.m, md_.read("state"), md_.aux, md_.geom, md_.mass(), md_.cellMaterial,
-                                md_.materials, xn, v, dt, md_.read("sigma"), md_.write("sigma_next"),
-                                md_.write("state_new"), md_.plasticHint(false));
+                                  md_.materials, xn, v, dt, md_.sigmaMid, md_.write("sigma_next"),
+                                  md_.write("state_new"), md_.plasticHint(true), md_.read("state_mid"), md_.geomMid);
+    return strainUpdate<D, P>(md_.m, md_.read("state"), md_.aux, md_.geom, md_.mass(), md_.cellMaterial, md_.materials,
+                              xn, v, dt, md_.read("sigma"), md_.write("sigma_next"), md_.write("state_new"),
+                              md_.plasticHint(false));
 }
 
 /*! Picard loop of 2.4 for a step dt: v_node holds the nodal solution for sigma = sigma^0. Each iteration moves the
  *  nodes, updates G_e implicitly (G^{l+1} into state_new) and, unless the stress has converged, solves the nodes
  *  again with sigma^{l+1}. On success v_node and sigma are the consistent pair the cell update needs (the forces at
  *  each node then balance exactly). Collective. */
-template <int D, class P>
-bool GprOperator<D, P>::picard(double dt, int& iterations, std::string& failure)
+template <int D, class P> bool GprOperator<D, P>::picard(double dt, int& iterations, std::string& failure)
 {
     const Scene& scene = md_.scene;
     double change = 0.0, prevChange = 0.0, omega = 1.0;

@@ -48,8 +48,7 @@ struct ExactErrors
     double l1 = -1.0, shock = -1.0, exactShock = 0.0;
 };
 
-template <int D, class P>
-ExactErrors exactErrors(const GprModel<D, P>& md, double t)
+template <int D, class P> ExactErrors exactErrors(const GprModel<D, P>& md, double t)
 {
     ExactErrors e;
     e.exactShock = md.scene.exactShockRadius;
@@ -71,7 +70,8 @@ int selfCheck(const GprModel<D, P>& md, const Conservation& c, double gcl, const
               const std::vector<double>& radii)
 {
     std::vector<std::string> fails;
-    auto bound = [&](const std::string& what, double value, double limit) {
+    auto bound = [&](const std::string& what, double value, double limit)
+    {
         if (!(value <= limit))
         {
             std::ostringstream os;
@@ -110,19 +110,19 @@ int selfCheck(const GprModel<D, P>& md, const Conservation& c, double gcl, const
 }
 
 template <int D, class P>
-void writeSummary(const GprModel<D, P>& md, const GprSystem<D, P>& sys, const RunOptions& options,
-                  const LoopResult& r, const Conservation& c, const ExactErrors& x, const std::vector<double>& radii)
+void writeSummary(const GprModel<D, P>& md, const GprSystem<D, P>& sys, const RunOptions& options, const LoopResult& r,
+                  const Conservation& c, const ExactErrors& x, const std::vector<double>& radii)
 {
     const auto& dm = *md.mesh;
-    const double cellSteps = double(dm.nGlobalCells) * double(r.steps) / std::max(r.wallSeconds, 1e-300);
-    const double picardMean = r.steps > 0 ? double(sys.picardTotal()) / r.steps : 0.0;
-    Summary s = runSummary(md.scene.file, md.scene.name, r, D, dm.nGlobalCells, dm.nGlobalNodes, md.size,
-                           options.threads);
+    const double cellSteps = double(dm.nGlobalCells) * double(r.state.steps) / std::max(r.wallSeconds, 1e-300);
+    const double picardMean = r.state.steps > 0 ? double(sys.picardTotal()) / r.state.steps : 0.0;
+    Summary s =
+        runSummary(md.scene.file, md.scene.name, r, D, dm.nGlobalCells, dm.nGlobalNodes, md.size, options.threads);
     s.object("physics", {{"strain", P::strain ? "true" : "false"},
                          {"plastic", P::plastic ? "true" : "false"},
                          {"heat", P::heat ? "true" : "false"}});
     s.object("picard_iterations", {{"mean", jsonNumber(picardMean)}, {"max", std::to_string(sys.picardMax())}});
-    s.number("t_final", r.t).number("wall_seconds", r.wallSeconds).number("cell_steps_per_second", cellSteps);
+    s.number("t_final", r.state.t).number("wall_seconds", r.wallSeconds).number("cell_steps_per_second", cellSteps);
     s.number("mass_relative_change", c.mass).number("momentum_relative_change", c.momentum);
     s.number("energy_relative_change", c.energy).number("max_gcl_defect", sys.maxGclDefect());
     s.number("boundary_work", sys.work());
@@ -141,8 +141,8 @@ void writeSummary(const GprModel<D, P>& md, const GprSystem<D, P>& sys, const Ru
     s.write((std::filesystem::path(md.scene.outputDirectory) / "summary.json").string());
     std::printf("unilag: %s %dD, %lld cells, %d rank(s) x %d thread(s): %ld steps to t = %.6g in %.3g s "
                 "(%.3g cell-steps/s); mass %.1e, momentum %.1e, energy %.1e",
-                md.scene.name.c_str(), D, (long long)dm.nGlobalCells, md.size, options.threads, r.steps, r.t,
-                r.wallSeconds, cellSteps, c.mass, c.momentum, c.energy);
+                md.scene.name.c_str(), D, (long long)dm.nGlobalCells, md.size, options.threads, r.state.steps,
+                r.state.t, r.wallSeconds, cellSteps, c.mass, c.momentum, c.energy);
     if (P::strain)
         std::printf("; Picard %.2f mean, %d max", picardMean, sys.picardMax());
     if (x.l1 >= 0.0)
@@ -179,7 +179,7 @@ int runGpr(const Scene& scene, std::shared_ptr<DistributedMesh> mesh, const RunO
     const LoopResult r = runTimeLoop(sys, timeControl(scene, options), md.comm);
     totals(md, final_);
     const Conservation c = conservation<D>(initial, final_, sys.impulse(), sys.work());
-    const ExactErrors x = r.failure.empty() ? exactErrors(md, r.t) : ExactErrors{};
+    const ExactErrors x = r.failure.empty() ? exactErrors(md, r.state.t) : ExactErrors{};
     const std::vector<double> radii = boundaryRadii(md);
     writeSummary(md, sys, options, r, c, x, radii);
     if (!r.failure.empty())

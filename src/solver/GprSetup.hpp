@@ -46,17 +46,21 @@ inline int kernelBoundaryType(BoundaryKind k)
 {
     switch (k)
     {
-    case BoundaryKind::Velocity: return BcVelocity;
-    case BoundaryKind::Free: return BcFree;
-    case BoundaryKind::Pressure: return BcPressure;
-    case BoundaryKind::Traction: return BcTraction;
-    default: return BcSlipWall;
+    case BoundaryKind::Velocity:
+        return BcVelocity;
+    case BoundaryKind::Free:
+        return BcFree;
+    case BoundaryKind::Pressure:
+        return BcPressure;
+    case BoundaryKind::Traction:
+        return BcTraction;
+    default:
+        return BcSlipWall;
     }
 }
 
 //! Boundary table by group id; every group of the mesh needs a condition and every condition a group.
-template <int D, class P>
-std::string setupBoundaries(GprModel<D, P>& md)
+template <int D, class P> std::string setupBoundaries(GprModel<D, P>& md)
 {
     const auto& dm = *md.mesh;
     const Scene& scene = md.scene;
@@ -101,8 +105,7 @@ std::string setupBoundaries(GprModel<D, P>& md)
 }
 
 //! Materials, indexed in the order of the scene's map; every region of the mesh needs an initial state.
-template <int D, class P>
-std::string setupMaterials(GprModel<D, P>& md)
+template <int D, class P> std::string setupMaterials(GprModel<D, P>& md)
 {
     const auto& dm = *md.mesh;
     const Scene& scene = md.scene;

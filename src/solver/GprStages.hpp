@@ -15,16 +15,15 @@ namespace unilag
 /*! Stores the rates of the current stage for the owned cells in the scratch field name (RateLayout; created on first
  *  use): the subcell forces of the state at t^n with the stress of the last nodal solve (strain) and its node
  *  velocities, and the heat fluxes computed for it. */
-template <int D, class P>
-void GprOperator<D, P>::storeStageRates(const std::string& name)
+template <int D, class P> void GprOperator<D, P>::storeStageRates(const std::string& name)
 {
     if (!md_.fields.has(name))
         md_.fields.add(name, Entity::Cell, RateLayout<D, P>::ncomp, Lifetime::Scratch);
     ConstField sigma;
     if constexpr (P::strain)
         sigma = md_.read("sigma");
-    const SubcellForces<D, P> forces{md_.m, md_.read("state"), md_.aux, sigma, md_.geom.corner, Reconstruction<D>(),
-                                     md_.read("v_node")};
+    const SubcellForces<D, P> forces{md_.m,           md_.read("state"),   md_.aux,           sigma,
+                                     md_.geom.corner, Reconstruction<D>(), md_.read("v_node")};
     ScopedTimer timer(md_.timers, Phase::CellUpdate);
     storeRates<D, P>(forces, md_.heatRate, md_.write(name));
 }

@@ -17,8 +17,7 @@
 namespace unilag
 {
 
-template <int D, class P>
-class GprSystem : public TimeSystem
+template <int D, class P> class GprSystem : public TimeSystem
 {
   public:
     explicit GprSystem(GprModel<D, P>& model) : md_(model), op_(model), euler_(op_), midpoint_(op_) {}
@@ -71,8 +70,8 @@ class GprSystem : public TimeSystem
     std::string failure(double t, double dt, int attempts) override
     {
         if (!stage_.failure.empty())
-            return "at t = " + jsonNumber(t) + " after " + std::to_string(attempts) + " halvings of dt: " +
-                   stage_.failure;
+            return "at t = " + jsonNumber(t) + " after " + std::to_string(attempts) +
+                   " halvings of dt: " + stage_.failure;
         return diagnose(md_, stage_.check, t, dt, attempts);
     }
 

@@ -2,7 +2,8 @@
  *  \brief The time integrators of the GPR system: short classes that call the operator's stages in order and know
  *  nothing of the physics (Laghos' ODE solvers, ARKODE's steppers). The rates at t^n (nodal solve with the first
  *  stress iterate, heat fluxes) are computed before the attempts, since they do not depend on dt.
- *   - ForwardEuler (scheme.order 1): the implicit Picard stage over dt, then the explicit update (docs/gpr-model.md 2.1-2.4).
+ *   - ForwardEuler (scheme.order 1): the implicit Picard stage over dt, then the explicit update
+ * (docs/gpr-model.md 2.1-2.4).
  *   - Midpoint (scheme.order 2): the same over dt/2 as the predictor, then the corrector over dt with the
  *     reconstructed midpoint fluxes (docs/gpr-model.md 2.5; the paper's IMEX ARS(2,2,2) is not implemented).
  */
@@ -30,8 +31,7 @@ struct StageResult
 };
 
 //! First-order stage: Picard coupling of the stress (strain variants), then the update of the cells over dt.
-template <int D, class P>
-bool eulerStage(GprOperator<D, P>& op, double dt, StageResult& r)
+template <int D, class P> bool eulerStage(GprOperator<D, P>& op, double dt, StageResult& r)
 {
     bool ok = true;
     if constexpr (P::strain)
@@ -41,8 +41,7 @@ bool eulerStage(GprOperator<D, P>& op, double dt, StageResult& r)
     return ok && admissible(r.check);
 }
 
-template <int D, class P>
-class ForwardEuler
+template <int D, class P> class ForwardEuler
 {
   public:
     explicit ForwardEuler(GprOperator<D, P>& op) : op_(op) {}
@@ -52,8 +51,7 @@ class ForwardEuler
     GprOperator<D, P>& op_;
 };
 
-template <int D, class P>
-class Midpoint
+template <int D, class P> class Midpoint
 {
   public:
     explicit Midpoint(GprOperator<D, P>& op) : op_(op) {}

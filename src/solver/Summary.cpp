@@ -62,7 +62,10 @@ Summary runSummary(const std::string& file, const std::string& title, const Loop
     Summary s;
     s.text("scene", file).text("title", title).text("status", r.failure.empty() ? "completed" : "unstable");
     s.integer("dimension", dim).integer("cells", cells).integer("nodes", nodes);
-    s.integer("ranks", ranks).integer("threads", threads).integer("steps", r.steps).integer("retries", r.retries);
+    s.integer("ranks", ranks)
+        .integer("threads", threads)
+        .integer("steps", r.state.steps)
+        .integer("retries", r.state.retries);
     return s;
 }
 

@@ -21,7 +21,7 @@ class Summary
     Summary& raw(const std::string& key, const std::string& json);
     Summary& number(const std::string& key, double v);
     Summary& integer(const std::string& key, long long v);
-    Summary& text(const std::string& key, const std::string& v); //!< quotes become apostrophes
+    Summary& text(const std::string& key, const std::string& v);   //!< quotes become apostrophes
     Summary& object(const std::string& key, const Pairs& members); //!< members' values are JSON already
     //! Each phase's share of the wall time.
     Summary& timeShares(const PhaseTimers& timers, double wall);

@@ -78,15 +78,19 @@ double chooseStep(TimeSystem& system, const TimeControl& c, double t, double dtP
 
 } // namespace
 
-LoopResult runTimeLoop(TimeSystem& system, const TimeControl& c, MPI_Comm comm)
+LoopResult runTimeLoop(TimeSystem& system, const TimeControl& c, MPI_Comm comm, LoopState from)
 {
     int rank;
     MPI_Comm_rank(comm, &rank);
     LoopResult r;
-    int dumps = 0;
-    double dtPrev = c.initialTimeStep;
-    double nextOutput = c.outputInterval > 0 ? c.outputInterval : c.endTime;
-    system.write(dumps++, r.t);
+    LoopState& s = r.state;
+    s = from;
+    if (s.dtPrev < 0.0)
+        s.dtPrev = c.initialTimeStep;
+    if (s.nextOutput < 0.0)
+        s.nextOutput = c.outputInterval > 0 ? c.outputInterval : c.endTime;
+    if (s.dumps == 0)
+        system.write(s.dumps++, s.t);
     std::unique_ptr<std::ofstream> steps;
     if (rank == 0 && !c.stepsCsv.empty())
     {
@@ -96,9 +100,9 @@ LoopResult runTimeLoop(TimeSystem& system, const TimeControl& c, MPI_Comm comm)
     const auto wall0 = Clock::now();
     {
         Progress progress(c.progress && rank == 0, c.endTime);
-        while (r.t < c.endTime * (1.0 - 1e-14) && r.steps < c.maxSteps)
+        while (s.t < c.endTime * (1.0 - 1e-14) && s.steps < c.maxSteps)
         {
-            double dt = chooseStep(system, c, r.t, dtPrev, r.steps, nextOutput, r.failure);
+            double dt = chooseStep(system, c, s.t, s.dtPrev, s.steps, s.nextOutput, r.failure);
             if (!r.failure.empty())
                 break;
             // Rejected steps (an inverted cell, an inadmissible state, an unconverged implicit solve) are retried
@@ -108,35 +112,35 @@ LoopResult runTimeLoop(TimeSystem& system, const TimeControl& c, MPI_Comm comm)
             bool ok = false;
             for (;; ++attempt)
             {
-                ok = system.attemptStep(r.t, dt, attempt, iterations);
+                ok = system.attemptStep(s.t, dt, attempt, iterations);
                 if (ok || attempt >= c.maxRetries)
                     break;
                 dt *= 0.5;
-                ++r.retries;
+                ++s.retries;
             }
             if (!ok)
             {
-                r.failure = system.failure(r.t, dt, attempt);
+                r.failure = system.failure(s.t, dt, attempt);
                 break;
             }
-            system.acceptStep(r.t, dt, iterations);
+            system.acceptStep(s.t, dt, iterations);
             if (steps)
-                *steps << r.steps + 1 << ',' << std::setprecision(12) << r.t + dt << ',' << dt << ',' << iterations
+                *steps << s.steps + 1 << ',' << std::setprecision(12) << s.t + dt << ',' << dt << ',' << iterations
                        << ',' << attempt << '\n';
-            r.t += dt;
-            dtPrev = dt;
-            ++r.steps;
-            if (r.t >= nextOutput * (1.0 - 1e-12) && r.t < c.endTime * (1.0 - 1e-14))
+            s.t += dt;
+            s.dtPrev = dt;
+            ++s.steps;
+            if (s.t >= s.nextOutput * (1.0 - 1e-12) && s.t < c.endTime * (1.0 - 1e-14))
             {
-                system.write(dumps++, r.t);
-                nextOutput = c.outputInterval > 0 ? nextOutput + c.outputInterval : c.endTime;
+                system.write(s.dumps++, s.t);
+                s.nextOutput = c.outputInterval > 0 ? s.nextOutput + c.outputInterval : c.endTime;
             }
-            progress.report(r.steps, r.t, dt);
+            progress.report(s.steps, s.t, dt);
         }
     }
     r.wallSeconds = std::chrono::duration<double>(Clock::now() - wall0).count();
     if (r.failure.empty())
-        system.write(dumps++, r.t);
+        system.write(s.dumps++, s.t);
     return r;
 }
 

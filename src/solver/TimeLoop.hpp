@@ -42,21 +42,31 @@ struct TimeControl
     double initialTimeStep = 0.0; //!< 0: a tenth of the first stable step
     double maxGrowth = 1.1;       //!< of dt from one step to the next
     long maxSteps = 10000000;
-    int maxRetries = 8;           //!< halvings of a rejected step before the run stops
+    int maxRetries = 8; //!< halvings of a rejected step before the run stops
     bool progress = true;
-    std::string stepsCsv;         //!< per accepted step: t, dt, iterations, halvings (rank 0; "" for none)
+    std::string stepsCsv; //!< per accepted step: t, dt, iterations, halvings (rank 0; "" for none)
+};
+
+/*! Where the loop is: all it needs to go on from here (a checkpoint keeps it with the system's persistent fields).
+ *  The default is the start of a run. */
+struct LoopState
+{
+    double t = 0.0;
+    double dtPrev = -1.0;     //!< the last accepted step (< 0: none yet, the first step is a fraction of the CFL one)
+    double nextOutput = -1.0; //!< the next output time (< 0: the first one after t = 0)
+    long steps = 0;
+    int dumps = 0;   //!< dumps written so far (the next dump's index)
+    int retries = 0; //!< halvings of rejected steps so far
 };
 
 struct LoopResult
 {
-    double t = 0.0;
-    long steps = 0;
-    int retries = 0;
+    LoopState state;          //!< where the loop stopped
     double wallSeconds = 0.0; //!< from the first step to the last (without the first and last dumps)
     std::string failure;      //!< "" if the run completed
 };
 
-//! Runs the system from t = 0 to the end time or the step cap. Collective.
-LoopResult runTimeLoop(TimeSystem& system, const TimeControl& control, MPI_Comm comm);
+//! Runs the system from `from` to the end time or the step cap. Collective.
+LoopResult runTimeLoop(TimeSystem& system, const TimeControl& control, MPI_Comm comm, LoopState from = LoopState());
 
 } // namespace unilag

@@ -14,8 +14,8 @@
 namespace
 {
 
-using unilag_test::HostMesh;
 using unilag::LO;
+using unilag_test::HostMesh;
 
 //! A scene of one ideal gas in the unit square or cube, slip walls all round, moving with a smooth velocity field.
 unilag::Scene gasScene(int dim)
@@ -157,10 +157,22 @@ template <int D> void checkTwoStagesByHand()
     }
 }
 
-TEST(Solver, StoredStageEqualsForwardEuler2D) { checkStoredStageEqualsEuler<2>(); }
-TEST(Solver, StoredStageEqualsForwardEuler3D) { checkStoredStageEqualsEuler<3>(); }
-TEST(Solver, TwoStagesCombinedByHand2D) { checkTwoStagesByHand<2>(); }
-TEST(Solver, TwoStagesCombinedByHand3D) { checkTwoStagesByHand<3>(); }
+TEST(Solver, StoredStageEqualsForwardEuler2D)
+{
+    checkStoredStageEqualsEuler<2>();
+}
+TEST(Solver, StoredStageEqualsForwardEuler3D)
+{
+    checkStoredStageEqualsEuler<3>();
+}
+TEST(Solver, TwoStagesCombinedByHand2D)
+{
+    checkTwoStagesByHand<2>();
+}
+TEST(Solver, TwoStagesCombinedByHand3D)
+{
+    checkTwoStagesByHand<3>();
+}
 
 /*! The midpoint integrator through the operator conserves mass and total energy to round-off over a few steps (slip
  *  walls do no work) and leaves the GCL defect at round-off. */
