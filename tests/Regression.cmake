@@ -142,6 +142,9 @@ endforeach()
 add_test(NAME gpr3d_agree COMMAND ${PYTHON} ${SCRIPTS}/compare_runs.py 1e-12 ${WORK}/gpr3d_np1_t1 ${WORK}/gpr3d_np1_t2
          ${WORK}/gpr3d_np2_t1 ${WORK}/gpr3d_np3_t1)
 set_tests_properties(gpr3d_agree PROPERTIES FIXTURES_REQUIRED gpr3d LABELS "gpr;mpi;regression")
+# The written specific internal energy is the EOS's (E less kinetic, elastic and thermal energies): p = 0.4 rho eps.
+add_test(NAME gpr3d_eos_consistency COMMAND ${PYTHON} ${SCRIPTS}/eos_consistency.py 1.4 ${WORK}/gpr3d_np1_t1)
+set_tests_properties(gpr3d_eos_consistency PROPERTIES FIXTURES_REQUIRED gpr3d LABELS "gpr;regression")
 
 # A Picard loop capped below what an elastic step needs is never accepted unconverged: each step is cut and retried,
 # and when the retries run out the run stops with the diagnosis (exit 4, no NaN).

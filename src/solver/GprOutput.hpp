@@ -47,13 +47,10 @@ template <int D, class P> void dump(GprModel<D, P>& md, io::XdmfWriter& writer, 
     {
         rho[i] = 1.0 / sh(i, S::omega);
         p[i] = ah(i, Aux::pressure);
-        double kin = 0.0;
         for (int d = 0; d < D; ++d)
-        {
             vel[3 * i + d] = sh(i, S::vel + d);
-            kin += 0.5 * vel[3 * i + d] * vel[3 * i + d];
-        }
-        eps[i] = sh(i, S::energy) - kin;
+        // E less the kinetic, elastic and thermal energies (computeEos): what the EOS sees
+        eps[i] = ah(i, Aux::eps);
         volume[i] = vol(i);
         gid[i] = double(dm.cellGid[i]);
     }
