@@ -6,7 +6,6 @@
 
 #include <memory>
 #include <string>
-#include <variant>
 
 #include "core/Format.hpp"
 #include "solver/GprDiagnostics.hpp"
