@@ -3,103 +3,48 @@
 // weights, by the operator and by hand.
 #include <gtest/gtest.h>
 
-#include <Tpetra_Core.hpp>
-
-#include "HostMesh.hpp"
-#include "mesh/GlobalMesh.hpp"
-#include "solver/GprDiagnostics.hpp"
-#include "solver/GprSetup.hpp"
-#include "solver/Integrators.hpp"
+#include "SolverHarness.hpp"
 
 namespace
 {
 
 using unilag::LO;
-using unilag_test::HostMesh;
+using unilag_test::expression;
 
-//! A scene of one ideal gas in the unit square or cube, slip walls all round, moving with a smooth velocity field.
-unilag::Scene gasScene(int dim)
+//! One ideal gas in the unit square or cube, slip walls all round, moving with a smooth velocity field.
+unilag::Scene gasScene(int dim, int order)
 {
-    unilag::Scene s;
-    s.file = "test_solver";
-    unilag::MaterialSpec gas;
-    gas.eos = unilag::EosKind::IdealGas;
-    gas.gamma = 1.4;
-    s.materials["gas"] = gas;
-    unilag::RegionSpec region;
-    region.material = "gas";
-    region.density = unilag::Expr{"1 + 0.2 * x", 0.0};
-    region.pressure = unilag::Expr{"1 + 0.5 * y", 0.0};
-    region.velocityComponents = dim;
-    region.velocity[0] = unilag::Expr{"0.3 * sin(_pi * x) * cos(_pi * y)", 0.0};
-    region.velocity[1] = unilag::Expr{"-0.3 * cos(_pi * x) * sin(_pi * y)", 0.0};
-    region.velocity[2] = unilag::Expr{"", 0.0};
-    s.regions["gas"] = region;
-    unilag::BoundarySpec wall;
-    wall.type = unilag::BoundaryKind::SlipWall;
-    s.boundaries["wall"] = wall;
-    s.writeOutput = false;
+    auto s = unilag_test::gasScene(dim, expression("1 + 0.2 * x"), expression("1 + 0.5 * y"),
+                                   {expression("0.3 * sin(_pi * x) * cos(_pi * y)"),
+                                    expression("-0.3 * cos(_pi * x) * sin(_pi * y)"), expression("")});
+    s.boundaries["wall"] = unilag_test::slipWall();
+    s.order = order;
     return s;
 }
 
-//! The distorted unit square (or cube) as a mesh on rank 0, one region, every boundary face in group "wall".
+//! The distorted unit square (or cube), every boundary face in group "wall".
 template <int D> unilag::GlobalMesh globalMesh(int n)
 {
-    HostMesh<D> h;
+    unilag_test::HostMesh<D> h;
     if constexpr (D == 2)
         h = unilag_test::squareMesh(n, 0.2, 7);
     else
         h = unilag_test::cubeMesh(n, 0.2, 7);
     unilag_test::connect<D>(h, [](int) { return 0; });
-    unilag::GlobalMesh g;
-    g.dim = D;
-    for (LO r = 0; r < h.nNodes(); ++r)
-        for (int d = 0; d < 3; ++d)
-            g.coords.push_back(d < D ? h.x[D * r + d] : 0.0);
-    g.cells.assign(h.cells.begin(), h.cells.end());
-    g.cellFaceGroup = h.faceGroup;
-    g.cellRegion.assign(h.nCells(), 0);
-    g.cellTag.resize(h.nCells());
-    for (LO i = 0; i < h.nCells(); ++i)
-        g.cellTag[i] = i + 1;
-    g.regionNames = {"gas"};
-    g.boundaryNames = {"wall"};
-    return g;
+    return unilag_test::globalMesh<D>(h, {"wall"});
 }
 
 //! The GPR model of the gas scene on the distorted mesh, initialised (state at t = 0, EOS and geometry current).
-template <int D> struct Harness
+template <int D> struct Harness : unilag_test::SolverHarness<D>
 {
-    using P = unilag::PhysicsHydro;
-    explicit Harness(int n, int order = 1)
-        : scene(withOrder(gasScene(D), order)),
-          model(scene, unilag::DistributedMesh::distribute(globalMesh<D>(n), Tpetra::getDefaultComm())), op(model)
-    {
-        error = unilag::initialize(model);
-        op.refreshGeometry();
-        op.computeAux();
-    }
-    static unilag::Scene withOrder(unilag::Scene s, int order)
-    {
-        s.order = order;
-        return s;
-    }
+    explicit Harness(int n, int order = 1) : unilag_test::SolverHarness<D>(gasScene(D, order), globalMesh<D>(n)) {}
     //! The rates at t^n that do not depend on dt, and the stable step.
     double prepare()
     {
-        op.setBoundaryTime(0.0);
-        op.solveNodes();
-        return op.stableTimeStep();
+        this->op.setBoundaryTime(0.0);
+        this->op.solveNodes();
+        return this->op.stableTimeStep();
     }
-    std::vector<double> host(const std::string& field) const
-    {
-        auto h = model.fields[field].getLocalViewHost(Tpetra::Access::ReadOnly);
-        return std::vector<double>(h.data(), h.data() + h.extent(0) * h.extent(1));
-    }
-    unilag::Scene scene;
-    unilag::GprModel<D, P> model;
-    unilag::GprOperator<D, P> op;
-    std::string error;
 };
 
 //! Stored rates of one stage with weight 1 give the fused forward-Euler update bit for bit.
