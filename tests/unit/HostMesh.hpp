@@ -10,9 +10,11 @@
 #include <array>
 #include <functional>
 #include <random>
+#include <string>
 #include <tuple>
 #include <vector>
 
+#include "mesh/GlobalMesh.hpp"
 #include "unilag/Geometry.hpp"
 
 namespace unilag_test
@@ -212,6 +214,26 @@ template <int D> unilag::MeshView<D> deviceMesh(const HostMesh<D>& h, const unil
     mesh.nOwnedCells = mesh.nCells = nCells;
     mesh.nOwnedNodes = mesh.nNodes = nNodes;
     return mesh;
+}
+
+/*! The connected HostMesh h as a mesh on rank 0: one region "gas", HostMesh face group g named boundaryNames[g].
+ *  Cell and node ids are the HostMesh indices, so after distribute the local row i is HostMesh entity gid[i]. */
+template <int D> unilag::GlobalMesh globalMesh(const HostMesh<D>& h, std::vector<std::string> boundaryNames)
+{
+    unilag::GlobalMesh g;
+    g.dim = D;
+    for (LO r = 0; r < h.nNodes(); ++r)
+        for (int d = 0; d < 3; ++d)
+            g.coords.push_back(d < D ? h.x[D * r + d] : 0.0);
+    g.cells.assign(h.cells.begin(), h.cells.end());
+    g.cellFaceGroup = h.faceGroup;
+    g.cellRegion.assign(h.nCells(), 0);
+    g.cellTag.resize(h.nCells());
+    for (LO i = 0; i < h.nCells(); ++i)
+        g.cellTag[i] = i + 1;
+    g.regionNames = {"gas"};
+    g.boundaryNames = std::move(boundaryNames);
+    return g;
 }
 
 } // namespace unilag_test

@@ -28,24 +28,18 @@ using unilag::MV;
 template <int D> GlobalMesh globalMeshOf(unilag_test::HostMesh<D> h)
 {
     unilag_test::connect<D>(h, unilag_test::wallGroup);
-    GlobalMesh g;
-    g.dim = D;
-    for (LO r = 0; r < h.nNodes(); ++r)
-        for (int d = 0; d < 3; ++d)
-            g.coords.push_back(d < D ? h.x[D * r + d] : 0.0);
-    g.cells.assign(h.cells.begin(), h.cells.end());
-    g.cellFaceGroup = h.faceGroup;
+    std::vector<std::string> walls;
+    for (int w = 0; w < 2 * D; ++w)
+        walls.push_back("wall" + std::to_string(w));
+    GlobalMesh g = unilag_test::globalMesh<D>(h, walls);
     for (LO i = 0; i < h.nCells(); ++i)
     {
         double x = 0.0;
         for (int k = 0; k < D + 1; ++k)
             x += h.x[D * h.cells[(D + 1) * i + k]] / (D + 1);
-        g.cellTag.push_back(std::size_t(i) + 1);
-        g.cellRegion.push_back(x < 0.5 ? 0 : 1);
+        g.cellRegion[i] = x < 0.5 ? 0 : 1;
     }
     g.regionNames = {"left", "right"};
-    for (int w = 0; w < 2 * D; ++w)
-        g.boundaryNames.push_back("wall" + std::to_string(w));
     return g;
 }
 
