@@ -1,9 +1,9 @@
 #!/usr/bin/env python3
 """Throughput of two builds compared by alternating runs (A B A B ...): the variant_step microbenchmarks (one whole
 step per physics variant, 64k cells, 1 thread) and the 64k-cell 2D Sedov run at 1 and 2 threads. Prints the median
-cells/s (or cell-steps/s) of each and the ratio B/A, and writes them as CSV.
+cells/s (or cell-steps/s) of each and the median of the A-B pairs' ratios B/A, and writes them as CSV.
 
-usage: ab_throughput.py BUILD_A BUILD_B OUT.csv [ROUNDS] [BENCH_FILTER]
+usage: ab_throughput.py BUILD_A BUILD_B OUT.csv [ROUNDS] [BENCH_FILTER] [--no-sedov]
   BUILD_*: build folders holding apps/unilag and apps/unilag_bench (e.g. build/release of two checkouts)
 """
 import csv
@@ -38,24 +38,29 @@ def sedov(build, threads):
 
 def main():
     a, b, out = sys.argv[1:4]
-    rounds = int(sys.argv[4]) if len(sys.argv) > 4 else 3
-    flt = sys.argv[5] if len(sys.argv) > 5 else "variant_step/.*/64k"
-    samples = {}
-    for r in range(rounds):
-        for label, build in (("A", a), ("B", b)):
-            for name, v in bench(build, flt).items():
-                samples.setdefault(name, {"A": [], "B": []})[label].append(v)
-            for t in (1, 2):
-                samples.setdefault(f"sedov2d_64k/{t}thread", {"A": [], "B": []})[label].append(sedov(build, t))
-        print(f"round {r + 1} of {rounds} done", flush=True)
+    rest = [x for x in sys.argv[4:] if x != "--no-sedov"]
+    rounds = int(rest[0]) if rest else 5
+    flt = rest[1] if len(rest) > 1 else "variant_step/.*/64k"
+    cases = [(f"^{n}$", n) for n in bench(a, flt)]  # one warm-up pass, which also lists the cases
+    if "--no-sedov" not in sys.argv:
+        cases += [(t, f"sedov2d_64k/{t}thread") for t in (1, 2)]
+    rows = []
+    # Each case is run A then B, round after round: a pair shares the machine's load of the moment, so the
+    # median of the pairs' ratios resists the slow drifts a shared machine has.
+    for key, name in cases:
+        va, vb = [], []
+        for _ in range(rounds):
+            for build, values in ((a, va), (b, vb)):
+                values.append(sedov(build, key) if name.startswith("sedov") else bench(build, key)[name])
+        ratio = statistics.median(y / x for x, y in zip(va, vb))
+        rows.append((name, statistics.median(va), statistics.median(vb), ratio, va, vb))
+        print(f"{name:48s} {rows[-1][1] / 1e6:9.3f} {rows[-1][2] / 1e6:9.3f} {ratio:6.3f}", flush=True)
     with open(out, "w", newline="") as f:
         w = csv.writer(f)
-        w.writerow(["case", "median_A", "median_B", "ratio_B_over_A", "samples"])
-        print(f"{'case':48s} {'A (M/s)':>9s} {'B (M/s)':>9s} {'B/A':>6s}")
-        for name, s in samples.items():
-            ma, mb = statistics.median(s["A"]), statistics.median(s["B"])
-            w.writerow([name, f"{ma:.6g}", f"{mb:.6g}", f"{mb / ma:.4f}", len(s["A"])])
-            print(f"{name:48s} {ma / 1e6:9.3f} {mb / 1e6:9.3f} {mb / ma:6.3f}")
+        w.writerow(["case", "median_A", "median_B", "median_ratio_B_over_A", "A", "B"])
+        for name, ma, mb, ratio, va, vb in rows:
+            w.writerow([name, f"{ma:.6g}", f"{mb:.6g}", f"{ratio:.4f}", " ".join(f"{v:.4g}" for v in va),
+                        " ".join(f"{v:.4g}" for v in vb)])
 
 
 if __name__ == "__main__":
