@@ -23,8 +23,8 @@ struct Conservation
 };
 
 template <int D>
-Conservation conservation(const double (&initial)[D + 3], const double (&final_)[D + 3], const double (&impulse)[D],
-                          double work)
+Conservation conservation(const std::vector<double>& initial, const std::vector<double>& final_,
+                          const double (&impulse)[D], double work)
 {
     Conservation c;
     c.mass = std::abs(final_[0] - initial[0]) / initial[0];
@@ -174,11 +174,8 @@ int runGpr(const Scene& scene, std::shared_ptr<DistributedMesh> mesh, const RunO
     if (scene.writeOutput)
         sys.openOutput(scene.outputDirectory);
     sys.start();
-    double initial[D + 3], final_[D + 3];
-    totals(md, initial);
     const LoopResult r = runTimeLoop(sys, timeControl(scene, options), md.comm);
-    totals(md, final_);
-    const Conservation c = conservation<D>(initial, final_, sys.impulse(), sys.work());
+    const Conservation c = conservation<D>(r.initialTotals, r.finalTotals, sys.impulse(), sys.work());
     const ExactErrors x = r.failure.empty() ? exactErrors(md, r.state.t) : ExactErrors{};
     const std::vector<double> radii = boundaryRadii(md);
     writeSummary(md, sys, options, r, c, x, radii);

@@ -6,6 +6,7 @@
 
 #include <memory>
 #include <string>
+#include <vector>
 
 #include "core/Format.hpp"
 #include "solver/GprDiagnostics.hpp"
@@ -92,6 +93,14 @@ template <int D, class P> class GprSystem : public TimeSystem
     {
         if (writer_)
             dump(md_, *writer_, index, t);
+    }
+
+    //! Mass (sum |T_i| / omega_i: tests the GCL), momentum, total energy, sum m|v|.
+    std::vector<double> totals() override
+    {
+        double t[D + 3];
+        unilag::totals(md_, t);
+        return std::vector<double>(t, t + D + 3);
     }
 
     long picardTotal() const { return picardTotal_; }

@@ -89,6 +89,7 @@ LoopResult runTimeLoop(TimeSystem& system, const TimeControl& c, MPI_Comm comm, 
         s.dtPrev = c.initialTimeStep;
     if (s.nextOutput < 0.0)
         s.nextOutput = c.outputInterval > 0 ? c.outputInterval : c.endTime;
+    r.initialTotals = system.totals();
     if (s.dumps == 0)
         system.write(s.dumps++, s.t);
     std::unique_ptr<std::ofstream> steps;
@@ -141,6 +142,7 @@ LoopResult runTimeLoop(TimeSystem& system, const TimeControl& c, MPI_Comm comm, 
     r.wallSeconds = std::chrono::duration<double>(Clock::now() - wall0).count();
     if (r.failure.empty())
         system.write(s.dumps++, s.t);
+    r.finalTotals = system.totals();
     return r;
 }
 

@@ -8,6 +8,7 @@
 #include <mpi.h>
 
 #include <string>
+#include <vector>
 
 namespace unilag
 {
@@ -33,6 +34,8 @@ class TimeSystem
     virtual std::string collapse(double t, double dt, long step) = 0;
     //! Writes dump number index of the state at t (nothing if the scene writes no output).
     virtual void write(int index, double t) = 0;
+    //! The conserved totals of the state (and whatever their check needs), the same on every rank.
+    virtual std::vector<double> totals() = 0;
 };
 
 struct TimeControl
@@ -63,7 +66,8 @@ struct LoopResult
 {
     LoopState state;          //!< where the loop stopped
     double wallSeconds = 0.0; //!< from the first step to the last (without the first and last dumps)
-    std::string failure;      //!< "" if the run completed
+    std::vector<double> initialTotals, finalTotals; //!< TimeSystem::totals() before the first step, after the last
+    std::string failure;                            //!< "" if the run completed
 };
 
 //! Runs the system from `from` to the end time or the step cap. Collective.
