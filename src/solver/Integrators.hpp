@@ -3,9 +3,10 @@
  *  nothing of the physics (Laghos' ODE solvers, ARKODE's steppers). The rates at t^n (nodal solve with the first
  *  stress iterate, heat fluxes) are computed before the attempts, since they do not depend on dt.
  *   - ForwardEuler (scheme.order 1): the implicit Picard stage over dt, then the explicit update
- * (docs/gpr-model.md 2.1-2.4).
+ *     (docs/gpr-model.md 2.1-2.4).
  *   - Midpoint (scheme.order 2): the same over dt/2 as the predictor, then the corrector over dt with the
- *     reconstructed midpoint fluxes (docs/gpr-model.md 2.5; the paper's IMEX ARS(2,2,2) is not implemented).
+ *     reconstructed midpoint fluxes (docs/gpr-model.md 2.5). An IMEX tableau such as the paper's ARS(2,2,2)
+ *     combines stored stages instead (GprOperator::storeStageRates, updateFromStages).
  */
 #pragma once
 
