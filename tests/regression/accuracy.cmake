@@ -1,61 +1,98 @@
 # Accuracy: errors against exact or reference solutions, convergence, conservation (--check).
-# Conservation over a full 2D Sedov run (mass, momentum, energy, GCL to round-off) and its shock radius.
+# Conservation over a full 2D Sedov run (mass, momentum, energy, GCL to round-off) and its accuracy on 4k triangles
+# (first order): L1(density) <= 0.055 (measured 0.0463) and shock radius within 2% of 0.9988 (measured 1.0070, +0.82%).
+# The L1 bound is 1.2x, not 2-3x, the measured figure: the 1k mesh's 0.0824 would pass 2x.
 add_test(NAME sedov2d_conservation
-         COMMAND ${UNILAG} run ${INPUTS}/sedov2d.yaml --quiet --check --set mesh.size=0.0288 --output ${WORK}/sedov2d_4k)
+         COMMAND ${UNILAG} run ${INPUTS}/sedov2d.yaml --quiet --check --set mesh.size=0.0288
+         --set exact.max_l1_density=0.055 --set exact.shock_radius_tolerance=0.02 --output ${WORK}/sedov2d_4k)
 # L1(density) decreases over 1k, 4k, 16k triangles; shock radius within 3% on the finest.
 add_test(NAME sedov2d_convergence COMMAND ${PYTHON} ${SCRIPTS}/sedov_convergence.py ${UNILAG} ${INPUTS}/sedov2d.yaml ${WORK})
-# 3D Sedov octant runs to t = 1 and conserves.
+# 3D Sedov octant (4.9k tetrahedra, h = 0.12) runs to t = 1, conserves, and against the exact spherical profile
+# (inputs/exact/sedov_sph_*.csv, from the similarity ODEs: tests/scripts/sedov_exact.py, checked by
+# exact_solutions_selftest): L1(density) <= 0.24 (measured 0.205) and shock radius within 12% of 1 (measured 1.0966,
+# +9.7%). Not 2-3x: undisturbed gas (rho = 1) scores L1 0.311, and the exact profile with its shock at 1.05 scores
+# 0.266. The errors fall with h (h = 0.08: 0.160, +4.3%; 0.06: 0.130, +2.5%; 16 and 38 s), the shock converging
+# from outside, as in 2D.
 add_test(NAME sedov3d_octant
-         COMMAND ${UNILAG} run ${INPUTS}/sedov3d.yaml --quiet --check --output ${WORK}/sedov3d)
+         COMMAND ${UNILAG} run ${INPUTS}/sedov3d.yaml --quiet --check --set exact.max_l1_density=0.24
+         --set exact.shock_radius_tolerance=0.12 --output ${WORK}/sedov3d)
 # Free (zero-traction) boundaries: a gas square expanding into vacuum conserves mass, momentum and energy.
 add_test(NAME free_expansion COMMAND ${UNILAG} run ${SCENES}/free_expansion.yaml --quiet --check --output ${WORK}/free)
 set_tests_properties(free_expansion PROPERTIES LABELS regression)
-# Mie-Grueneisen copper hit by a piston: the Rankine-Hugoniot state (linear Us-up Hugoniot) within 2%.
+# Mie-Grueneisen copper hit by a piston: the Rankine-Hugoniot state (linear Us-up Hugoniot): density and pressure
+# behind and density ahead within 0.15% (measured 0.06%, 0.04%, 0.01%), shock position within 2% (measured 0.85%).
 add_test(NAME mg_piston_run COMMAND ${UNILAG} run ${SCENES}/mg_piston.yaml --quiet --check --output ${WORK}/mg_piston)
 set_tests_properties(mg_piston_run PROPERTIES FIXTURES_SETUP mg_piston LABELS regression)
-add_test(NAME mg_piston_hugoniot COMMAND ${PYTHON} ${SCRIPTS}/piston_shock.py ${WORK}/mg_piston 8930 9996.9 2.0918e10 0.4685 0.05 0.02)
+add_test(NAME mg_piston_hugoniot COMMAND ${PYTHON} ${SCRIPTS}/piston_shock.py ${WORK}/mg_piston 8930 9996.9 2.0918e10 0.4685 0.05 0.0015 0.02)
 set_tests_properties(mg_piston_hugoniot PROPERTIES FIXTURES_REQUIRED mg_piston LABELS regression)
 # Kidder's shell under imposed boundary pressures (full-annulus polar meshes, 3k-48k cells): at second order both
 # radii within 1% on every mesh and the inner error falling at order >= 1.2; first order converging at order >= 0.8;
-# the GPR model with tau1 = 1e-14 within 1% and within 0.1% of the Euler run.
+# the GPR model with tau1 = 1e-14 within 0.75% and within 0.07% of the Euler run. Bounds and measured figures: the
+# script's docstring (about 2.5x, except the 3k mesh's 1%: measured 0.86%).
 add_test(NAME kidder2d_convergence COMMAND ${PYTHON} ${SCRIPTS}/kidder_convergence.py ${UNILAG} ${INPUTS}/kidder2d.yaml ${WORK})
 set_tests_properties(sedov2d_conservation sedov2d_convergence sedov3d_octant kidder2d_convergence PROPERTIES LABELS regression)
 
-# GPR hydrodynamic limit: the full model with tau1 = 1e-14 (G_e, Picard loop, exact relaxation, stress in
-# the nodal solver) reproduces the Euler solver's 2D Sedov to 1e-6 in every field. Output only at the end, so that
-# no intermediate output time clips the steps (the c_sh = 1e-6 signal speed differs from c0 by ~1e-10 relative).
-add_test(NAME hydro_limit_euler COMMAND ${UNILAG} run ${INPUTS}/sedov2d.yaml --quiet --set mesh.size=0.0288
-         --set output.interval=0 --output ${WORK}/hydro_limit_euler)
-add_test(NAME hydro_limit_gpr COMMAND ${UNILAG} run ${INPUTS}/sedov2d_gpr.yaml --quiet --check --set mesh.size=0.0288
-         --set output.interval=0 --output ${WORK}/hydro_limit_gpr)
+# GPR hydrodynamic limit (tests/scripts/hydro_limit.py): the full model with tau1 = 1e-14 and c_sh = 0.1 (of the
+# order of the shocked gas' sound speed; inputs/sedov2d_gpr.yaml) against the Euler solver, 2D Sedov on 1k triangles,
+# both at the same fixed step dt = 4e-4 (initial_dt with max_growth = 1: below every stable step of both runs; the
+# script checks the steps are identical). Output only at the end.
+#  - The stress: max von Mises / max pressure <= 5e-15 (measured 1.61e-15) and max |dev G| / tr G <= 5e-11 (measured
+#    1.92e-11). Both are the Navier-Stokes deviator, proportional to tau1 c_sh^2: measured 1.61e-13 / 1.92e-9 at
+#    tau1 = 1e-12, 1.61e-11 / 1.92e-7 at 1e-10, and 1.95e-15 at c_sh = 0.11 (x 1.21). So a relaxation 3x too slow
+#    or a stress 3x too large fails; an unrelaxed G_e (tau1 = 1e14) gives 1.29 and 0.79.
+#  - Every field within about 2x of the measured difference from the Euler run (density 6.1e-2, pressure 7.6e-2,
+#    velocity 0.130, internal energy 1.2e-2, volume 2.6e-2). These are not round-off: c_sh enters the impedance
+#    rho sqrt(c0^2 + 4/3 c_sh^2) of the nodal solver, and thus the scheme's dissipation (c_sh = 1e-3: 6e-4; 1e-2: 9e-3;
+#    1: 0.54). With the unrelaxed G_e the differences are 0.69, 0.80, 0.76, 0.066, 0.23. The stress's use in the
+#    nodal solver is tested where it is large: traction_wave, tau1_sweep, be_plate, be_shell.
+set(HYDRO_LIMIT_STEP --set mesh.size=0.0577 --set output.interval=0 --set time.initial_dt=4e-4 --set time.max_growth=1)
+add_test(NAME hydro_limit_euler COMMAND ${UNILAG} run ${INPUTS}/sedov2d.yaml --quiet ${HYDRO_LIMIT_STEP}
+         --output ${WORK}/hydro_limit_euler)
+add_test(NAME hydro_limit_gpr COMMAND ${UNILAG} run ${INPUTS}/sedov2d_gpr.yaml --quiet --check ${HYDRO_LIMIT_STEP}
+         --output ${WORK}/hydro_limit_gpr)
 set_tests_properties(hydro_limit_euler hydro_limit_gpr PROPERTIES FIXTURES_SETUP hydro_limit LABELS "gpr;regression")
-add_test(NAME hydro_limit_agree COMMAND ${PYTHON} ${SCRIPTS}/compare_runs.py 1e-6 ${WORK}/hydro_limit_euler ${WORK}/hydro_limit_gpr)
+add_test(NAME hydro_limit_agree COMMAND ${PYTHON} ${SCRIPTS}/hydro_limit.py ${WORK}/hydro_limit_euler
+         ${WORK}/hydro_limit_gpr density=0.12,pressure=0.15,velocity=0.26,specific_internal_energy=0.025,volume=0.05
+         5e-15 5e-11)
 set_tests_properties(hydro_limit_agree PROPERTIES FIXTURES_REQUIRED hydro_limit LABELS "gpr;regression")
 
-# Imposed traction on an elastic block: velocity behind the longitudinal wave p / (rho c_L) and its front c_L t within 2%.
+# Imposed traction on an elastic block: velocity behind the longitudinal wave p / (rho c_L) within 0.8% (measured
+# 0.30%) and its front c_L t within 1.5% (measured 0.64%).
 add_test(NAME traction_wave_run COMMAND ${UNILAG} run ${SCENES}/traction_wave.yaml --quiet --check --output ${WORK}/traction_wave)
 set_tests_properties(traction_wave_run PROPERTIES FIXTURES_SETUP traction_wave LABELS "gpr;regression")
-add_test(NAME traction_wave_check COMMAND ${PYTHON} ${SCRIPTS}/traction_wave.py ${WORK}/traction_wave 4.3301e-3 0.69282 0.4 0.02)
+add_test(NAME traction_wave_check COMMAND ${PYTHON} ${SCRIPTS}/traction_wave.py ${WORK}/traction_wave 4.3301e-3 0.69282 0.4 0.008 0.015)
 set_tests_properties(traction_wave_check PROPERTIES FIXTURES_REQUIRED traction_wave LABELS "gpr;regression")
 
 # Full GPR model (docs/gpr-model.md 3.4-3.9). The exact-solution code of the two convergence scripts checks itself
-# first.
+# first; so does the Sedov similarity solver that made the 3D table (mass, energy, Rankine-Hugoniot, the energy
+# constant 0.851072, and ExactPack's 2D table to 7e-5).
 add_test(NAME exact_solutions_selftest COMMAND bash -c
-         "${PYTHON} ${SCRIPTS}/viscous_shock.py --selftest && ${PYTHON} ${SCRIPTS}/heat_conduction.py --selftest")
-# Mach-2 viscous shock (mu = 2e-2, Pr = 3/4): L1(density) against the Becker profile decreases over three meshes.
+         "${PYTHON} ${SCRIPTS}/viscous_shock.py --selftest && ${PYTHON} ${SCRIPTS}/heat_conduction.py --selftest && ${PYTHON} ${SCRIPTS}/sedov_exact.py --selftest")
+# Mach-2 viscous shock (mu = 2e-2, Pr = 3/4): L1(density) against the Becker profile decreases over three meshes
+# (measured 5.20e-2, 3.21e-2, 2.33e-2) and is <= 0.030 on the finest (1.3x: below the 400-cell mesh's 0.032).
 add_test(NAME viscous_shock_becker
-         COMMAND ${PYTHON} ${SCRIPTS}/viscous_shock.py ${UNILAG} ${INPUTS}/viscous_shock2d.yaml ${WORK})
-# Isobaric temperature step: L1(temperature) against the Fourier solution decreases over three meshes.
+         COMMAND ${PYTHON} ${SCRIPTS}/viscous_shock.py ${UNILAG} ${INPUTS}/viscous_shock2d.yaml ${WORK} --max-fine-l1 0.030)
+# Isobaric temperature step: L1(temperature) against the Fourier solution decreases over three meshes (measured
+# 3.31e-4, 1.55e-4, 6.46e-5) and is <= 1.3e-4 on the finest (2x, below the 1600-cell mesh's figure); the extrapolated
+# diffusivity within 10% of the isobaric one (measured -3.9%).
 add_test(NAME heat_conduction_fourier
-         COMMAND ${PYTHON} ${SCRIPTS}/heat_conduction.py ${UNILAG} ${INPUTS}/heat_conduction2d.yaml ${WORK})
-# Beryllium shell collapse at V0 = 417.1, 454.7, 490.2 m/s, second order (thin-wedge meshes of 1 and 0.5 mm, --check):
-# the final inner radius converges at order >= 1 and is within 3 % of 5, 4.5, 4 cm at 0.5 mm. About 150 s each.
-add_test(NAME be_shell2d COMMAND ${PYTHON} ${SCRIPTS}/shell_collapse.py ${UNILAG} ${INPUTS}/be_shell2d.yaml ${WORK} 0.05)
+         COMMAND ${PYTHON} ${SCRIPTS}/heat_conduction.py ${UNILAG} ${INPUTS}/heat_conduction2d.yaml ${WORK} --max-fine-l1 1.3e-4)
+# Beryllium shell collapse at V0 = 417.1, 454.7, 490.2 m/s, second order, thin wedge, --check
+# (tests/scripts/shell_collapse.py): on a coarse and a fine mesh the final inner radius converges from above
+# (r_coarse > r_fine > exact) at an observed order >= 1, and the fine one is within a bound of 5, 4.5, 4 cm.
+#  - 417.1 m/s on 1 and 0.5 mm: +1.85%, +0.39% (order 2.24); bound 1% (2.5x). ~130 s.
+#  - 454.7 and 490.2 m/s on 1.4 and 1 mm: +4.94%, +3.19% (order 1.30) and +7.70%, +5.14% (order 1.20); bounds 8% and
+#    13% (2.5x). ~25 s each.
+# Given up for time (this was ~1150 of the suite's ~1500 test seconds): the 0.5 mm runs of 454.7 and 490.2 m/s
+# (+0.99%, +1.85%; 110 s each). The fastest shell's 1 mm run, which the others no longer reach, still shows the
+# dissipation stopping it early.
+add_test(NAME be_shell2d
+         COMMAND ${PYTHON} ${SCRIPTS}/shell_collapse.py ${UNILAG} ${INPUTS}/be_shell2d.yaml ${WORK} 0.05 0.001,0.0005 0.01)
 add_test(NAME be_shell2d_v454
-         COMMAND ${PYTHON} ${SCRIPTS}/shell_collapse.py ${UNILAG} ${INPUTS}/be_shell2d_v454.yaml ${WORK} 0.045)
+         COMMAND ${PYTHON} ${SCRIPTS}/shell_collapse.py ${UNILAG} ${INPUTS}/be_shell2d_v454.yaml ${WORK} 0.045 0.0014,0.001 0.08)
 add_test(NAME be_shell2d_v490
-         COMMAND ${PYTHON} ${SCRIPTS}/shell_collapse.py ${UNILAG} ${INPUTS}/be_shell2d_v490.yaml ${WORK} 0.04)
-# Elastic beryllium plate: period of the first bending mode within 3 % of the plane-strain reference
+         COMMAND ${PYTHON} ${SCRIPTS}/shell_collapse.py ${UNILAG} ${INPUTS}/be_shell2d_v490.yaml ${WORK} 0.04 0.0014,0.001 0.13)
+# Elastic beryllium plate: period of the first bending mode within 2.5 % of the plane-strain reference
 # (28.89 us, tests/scripts/plate_reference_period.py). Right half with a symmetry plane at x = 0, 0.5 mm, second
 # order with the vertex-based limiter (the scene's scheme; measured -1.0 %), ~15 s.
 add_test(NAME be_plate_run COMMAND ${UNILAG} run ${INPUTS}/be_plate2d.yaml --quiet --check
@@ -63,8 +100,8 @@ add_test(NAME be_plate_run COMMAND ${UNILAG} run ${INPUTS}/be_plate2d.yaml --qui
          --output ${WORK}/be_plate)
 set_tests_properties(be_plate_run PROPERTIES FIXTURES_SETUP be_plate)
 # The mode's last extremum must also be within 0.7 .. 1.1 of its first (measured 0.86; the face-bounded limiter
-# leaves 0.07, and without limiter the mode grows to 1.24).
-add_test(NAME be_plate_period COMMAND ${PYTHON} ${SCRIPTS}/plate_period.py ${WORK}/be_plate 28.89e-6 0.03 1.5e-3 0.7 1.1)
+# leaves 0.07, and without limiter the mode grows to 1.24). 0.7 allows 2.2x the measured loss of 14%.
+add_test(NAME be_plate_period COMMAND ${PYTHON} ${SCRIPTS}/plate_period.py ${WORK}/be_plate 28.89e-6 0.025 1.5e-3 0.7 1.1)
 set_tests_properties(be_plate_period PROPERTIES FIXTURES_REQUIRED be_plate)
 # tau1 from 1e-14 to 1e14: conservation, isotropic G in the fluid limit, det G = (rho/rho0)^2 in the elastic one.
 add_test(NAME tau1_sweep COMMAND ${PYTHON} ${SCRIPTS}/tau1_sweep.py ${UNILAG} ${SCENES}/tau1_sweep.yaml ${WORK})
@@ -73,15 +110,18 @@ set_tests_properties(exact_solutions_selftest viscous_shock_becker heat_conducti
 
 # Second order (scheme.order: 2: limited reconstruction, midpoint predictor-corrector). The kernels' exactness for
 # linear fields, bounds and conservation are unit tests (test_hydro_kernels.cpp); here the solver:
-#  - 2D Sedov (4k): conservation to round-off and the shock radius (--check);
+#  - 2D Sedov (4k): conservation to round-off; shock radius within 2% (measured 1.0060, +0.72%); L1(density) <= 0.046
+#    (measured 0.0444): below first order's measured 0.0463, which order 2 beats by only 4% here (the 8.4k figures:
+#    0.030 against 0.037; README);
 #  - every GPR equation (3D viscous, heat-conducting Sedov) and the plastic impact: 1 and 2 ranks, 1 and 2 threads
 #    give the same fields (the gradients' halo exchange included).
 add_test(NAME sedov2d_order2 COMMAND ${UNILAG} run ${INPUTS}/sedov2d.yaml --quiet --check --set mesh.size=0.0288
-         --set scheme.order=2 --output ${WORK}/sedov2d_order2)
+         --set scheme.order=2 --set exact.max_l1_density=0.046 --set exact.shock_radius_tolerance=0.02
+         --output ${WORK}/sedov2d_order2)
 set_tests_properties(sedov2d_order2 PROPERTIES LABELS regression)
 # Mach-2 viscous shock at second order (Picard in the predictor, explicit midpoint stress in the corrector): L1(density)
-# against the Becker profile falls with h (measured 3.6e-2, 1.5e-2, 1.05e-2 against 5.2e-2, 3.2e-2, 2.3e-2 at first
-# order).
+# against the Becker profile falls with h (measured 2.70e-2, 1.48e-2, 1.05e-2 against 5.2e-2, 3.2e-2, 2.3e-2 at first
+# order) and is <= 0.014 on the finest (1.3x: below the 400-cell figure, and below first order's 2.3e-2).
 add_test(NAME viscous_shock_becker_order2 COMMAND ${PYTHON} ${SCRIPTS}/viscous_shock.py ${UNILAG}
-         ${INPUTS}/viscous_shock2d.yaml ${WORK}/order2 --set scheme.order=2)
+         ${INPUTS}/viscous_shock2d.yaml ${WORK}/order2 --max-fine-l1 0.014 --set scheme.order=2)
 set_tests_properties(viscous_shock_becker_order2 PROPERTIES LABELS "gpr;regression")

@@ -24,7 +24,7 @@ Adiabatic walls at x = -0.5, 0.5: the exact linear solution is the cosine series
 The script compares cell temperatures (the `temperature` field, else specific_internal_energy / cv) at the cell
 centroids with it.
 
-usage: heat_conduction.py UNILAG SCENE WORKDIR [--set KEY=VALUE ...]
+usage: heat_conduction.py UNILAG SCENE WORKDIR [--max-fine-l1 X] [--set KEY=VALUE ...]
        heat_conduction.py --selftest
 """
 import glob
@@ -109,6 +109,11 @@ def main():
         sys.exit(0 if selftest() else 1)
     unilag, scene, work = sys.argv[1:4]
     extra = sys.argv[4:]  # more --set options for every run (e.g. --set scheme.order=2)
+    max_fine = None  # --max-fine-l1 X: bound on the finest mesh's L1 error
+    if "--max-fine-l1" in extra:
+        k = extra.index("--max-fine-l1")
+        max_fine = float(extra[k + 1])
+        del extra[k:k + 2]
     if not selftest():
         sys.exit(1)
     rows = []
@@ -138,6 +143,12 @@ def main():
     if not abs(chi0 / CHI_P - 1.0) <= CHI_TOL:
         print(f"FAIL: the extrapolated diffusivity is not the isobaric one within {CHI_TOL:.0%}")
         ok = False
+    if max_fine is not None:
+        fine = rows[-1][2]
+        print(f"finest mesh: L1(theta) = {fine:.4e} (bound {max_fine:.4e})")
+        if not fine <= max_fine:
+            print("FAIL: the finest mesh's L1 error exceeds the bound")
+            ok = False
     print("heat_conduction:", "PASS" if ok else "FAIL")
     sys.exit(0 if ok else 1)
 

@@ -1,10 +1,12 @@
 #!/usr/bin/env python3
 """Kidder's isentropic shell compression (gamma = 2, imposed boundary pressures) to h(t) = 1/2 on three polar meshes
 of the full annulus (3k, 12k, 48k cells), at second order (the scene's scheme) and at first order:
-  - second order: inner (exact 0.45) and outer (exact 0.5) radii within 1% on every mesh, inner error order >= 1.2;
+  - second order: inner (exact 0.45) and outer (exact 0.5) radii within 1%, 0.8%, 0.2% on the 3k, 12k, 48k meshes
+    (measured inner +0.86%, +0.32%, +0.08%, outer <= 0.01%), inner error order >= 1.2 (measured 1.42, 1.96);
   - first order: inner error order >= 0.8 (it is several % off: the reference the second order is measured against);
   - the GPR model in its hydrodynamic limit (tau1 = 1e-14, c_sh = 10; docs/gpr-model.md 3.2), second order on 12k cells:
-    both radii within 1%, and within 0.1% (of the exact radius) of the Euler run;
+    both radii within 0.75% (measured inner +0.29%), and within 0.07% (of the exact radius) of the Euler run
+    (measured 0.028%);
 every run must conserve (--check).
 
 usage: kidder_convergence.py UNILAG SCENE WORKDIR
@@ -17,9 +19,9 @@ import sys
 unilag, scene, work = sys.argv[1:4]
 sizes = [0.02, 0.01, 0.005]
 ok = True
-for order, min_order, bound in ((2, 1.2, 0.01), (1, 0.8, None)):
+for order, min_order, bounds in ((2, 1.2, (0.01, 0.008, 0.002)), (1, 0.8, None)):
     rows = []
-    for h in sizes:
+    for h, bound in zip(sizes, bounds or (None,) * len(sizes)):
         out = f"{work}/kidder_o{order}_h{h}"
         subprocess.run([unilag, "run", scene, "--quiet", "--check", "--set", "exact.radius_tolerance=0", "--set",
                         f"scheme.order={order}", "--set", f"mesh.size={h}", "--set", "output.enabled=false",
@@ -40,7 +42,7 @@ for order, min_order, bound in ((2, 1.2, 0.01), (1, 0.8, None)):
             print(f"FAIL: below {min_order}")
             ok = False
 out = f"{work}/kidder_gpr_h0.01"
-subprocess.run([unilag, "run", scene, "--quiet", "--check", "--set", "exact.radius_tolerance=0.01", "--set",
+subprocess.run([unilag, "run", scene, "--quiet", "--check", "--set", "exact.radius_tolerance=0.0075", "--set",
                 "mesh.size=0.01", "--set", "materials.gas.shear_sound_speed=10", "--set",
                 "materials.gas.strain_relaxation.law=constant", "--set", "materials.gas.strain_relaxation.tau1=1e-14",
                 "--set", "output.enabled=false", "--output", out], check=True)
@@ -52,8 +54,8 @@ for group, exact in (("inner", 0.45), ("outer", 0.5)):
     gap = abs(gpr[group] - euler[group]) / exact
     print(f"GPR tau1 = 1e-14, 12k cells: {group} radius {gpr[group]:.5f} (error {(gpr[group] - exact) / exact:+.2%}), "
           f"{gap:.3%} from the Euler run")
-    if gap > 1e-3:
-        print("FAIL: the hydrodynamic limit is more than 0.1% from the Euler run")
+    if gap > 7e-4:
+        print("FAIL: the hydrodynamic limit is more than 0.07% from the Euler run")
         ok = False
 print("kidder_convergence:", "PASS" if ok else "FAIL")
 sys.exit(0 if ok else 1)

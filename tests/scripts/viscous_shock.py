@@ -17,7 +17,7 @@ excludes it (it lies ~0.19 behind the shock at t = 0.25, spread by conduction ov
 The exact profile is solved by bisection (numpy only); `viscous_shock.py --selftest` checks it: the end states
 against Rankine-Hugoniot and Becker's ODE (4/3)(mu/(rho0 U)) v' = ((gamma+1)/(2 gamma)) (1 - v)(v - a)/v.
 
-usage: viscous_shock.py UNILAG SCENE WORKDIR [--set KEY=VALUE ...]
+usage: viscous_shock.py UNILAG SCENE WORKDIR [--max-fine-l1 X] [--set KEY=VALUE ...]
        viscous_shock.py --selftest
 """
 import glob
@@ -131,6 +131,11 @@ def main():
         sys.exit(0 if selftest() else 1)
     unilag, scene, work = sys.argv[1:4]
     extra = sys.argv[4:]  # more --set options for every run (e.g. --set scheme.order=2)
+    max_fine = None  # --max-fine-l1 X: bound on the finest mesh's L1 error
+    if "--max-fine-l1" in extra:
+        k = extra.index("--max-fine-l1")
+        max_fine = float(extra[k + 1])
+        del extra[k:k + 2]
     if not selftest():
         sys.exit(1)
     rows = []
@@ -154,6 +159,12 @@ def main():
     for r in rows:
         if abs(r[2]) > MAX_SHIFT:
             print(f"FAIL: shock shifted by {r[2]:+.4f} from XJ + Ms c0 t on {r[1]} cells (> {MAX_SHIFT})")
+            ok = False
+    if max_fine is not None:
+        fine = rows[-1][3]
+        print(f"finest mesh: L1(rho) = {fine:.4e} (bound {max_fine:.4e})")
+        if not fine <= max_fine:
+            print("FAIL: the finest mesh's L1 error exceeds the bound")
             ok = False
     print("viscous_shock:", "PASS" if ok else "FAIL")
     sys.exit(0 if ok else 1)
