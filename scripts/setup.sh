@@ -21,7 +21,7 @@ if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 PKGS=(build-essential cmake ninja-build pkg-config dpkg-dev xz-utils
       libopenmpi-dev openmpi-bin libhdf5-openmpi-dev libgmsh-dev gmsh
       libgtest-dev libbenchmark-dev liblapack-dev libblas-dev libmuparser-dev
-      python3-matplotlib python3-h5py python3-numpy paraview python3-paraview)
+      python3-matplotlib python3-h5py python3-numpy python3-scipy paraview python3-paraview)
 missing=()
 for p in "${PKGS[@]}"; do
   dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
