@@ -56,24 +56,43 @@ template <int D, class P> struct SubcellForces
     Reconstruction<D> rec;         //!< inactive at first order
     ConstField vnode;
 
+    /*! f_ri of corner k of cell i and the velocity vr of its node r. If scale is given, the magnitudes of its
+     *  pressure, impedance and elastic terms are added to it (what a balance of these forces is relative to). */
+    KOKKOS_INLINE_FUNCTION Vec<D> cornerForce(const LO i, const int k, Vec<D>& vr, double* scale = nullptr) const
+    {
+        const LO r = mesh.cellNodes(i, k);
+        double pk;
+        gpr::Sym3 sk;
+        Vec<D> vk;
+        cornerValues<D, P>(state, aux, stress, rec, i, r, vk, pk, sk);
+        for (int d = 0; d < D; ++d)
+            vr[d] = vnode(r, d);
+        const Vec<D> ck = cornerVec<D>(corner, i, k);
+        const Vec<D> pressure = (-pk) * ck;
+        const double z = aux(i, Aux::impedance);
+        const Mat<D> Mik = subcellMatrix<D>(corner, i, k);
+        const Vec<D> viscous = z * (Mik * (vr - vk));
+        Vec<D> f = pressure + viscous;
+        double elastic = 0.0;
+        if constexpr (P::strain)
+        {
+            const Vec<D> fs = stressTimes<D>(sk, ck);
+            f = f + fs;
+            elastic = norm(fs);
+        }
+        if (scale) // the terms before they cancel: z M v_r and z M v_i, not their small difference
+            *scale += norm(pressure) + z * (norm(Mik * vr) + norm(Mik * vk)) + elastic;
+        return f;
+    }
+
     KOKKOS_INLINE_FUNCTION void operator()(const LO i, Vec<D>& force, double& power) const
     {
-        const double z = aux(i, Aux::impedance);
         force = Vec<D>::zero();
         power = 0.0;
         for (int k = 0; k < D + 1; ++k)
         {
-            const LO r = mesh.cellNodes(i, k);
-            double pk;
-            gpr::Sym3 sk;
-            Vec<D> vk, vr;
-            cornerValues<D, P>(state, aux, stress, rec, i, r, vk, pk, sk);
-            for (int d = 0; d < D; ++d)
-                vr[d] = vnode(r, d);
-            const Vec<D> ck = cornerVec<D>(corner, i, k);
-            Vec<D> f = (-pk) * ck + z * (subcellMatrix<D>(corner, i, k) * (vr - vk));
-            if constexpr (P::strain)
-                f = f + stressTimes<D>(sk, ck);
+            Vec<D> vr;
+            const Vec<D> f = cornerForce(i, k, vr);
             force = force + f;
             power += dot(f, vr);
         }

@@ -107,6 +107,22 @@ UpdateCheck applyUpdate(const MeshView<D>& mesh, const ConstField& state, const 
     return UpdateCheck{ext[0], ext[1], -ext[2], bad ? LO(ext[3]) : LO(-1)};
 }
 
+//! The subcell forces of the flux state (flux, if given; otherwise state, aux, stress, geom) with node velocities vnode.
+template <int D, class P>
+SubcellForces<D, P> subcellForces(const MeshView<D>& mesh, const ConstField& state, const ConstField& aux,
+                                  const ConstField& stress, const CellGeometry& geom, const ConstField& vnode,
+                                  const CellFlux<D>& flux = CellFlux<D>())
+{
+    const bool separate = flux.state.extent(0) > 0;
+    return SubcellForces<D, P>{mesh,
+                               separate ? flux.state : state,
+                               separate ? flux.aux : aux,
+                               separate ? flux.stress : stress,
+                               separate ? flux.geom.corner : geom.corner,
+                               flux.rec,
+                               vnode};
+}
+
 /*! \brief Forward-Euler update of the owned cells from one live stage: the subcell forces of the flux state (flux, if
  *  given: the midpoint of a second-order step with its reconstruction; otherwise state, aux, geom and stress), whose
  *  nodal solution is vnode, and the heat fluxes heatRate (owned cells: m dE/dt, m dJ/dt). Strain variants: stress is
@@ -119,14 +135,7 @@ UpdateCheck updateCells(const MeshView<D>& mesh, const ConstField& state, const 
                         const ConstField& stress = ConstField(), const ConstField& heatRate = ConstField(),
                         const CellGeometry& geomNew = CellGeometry(), const CellFlux<D>& flux = CellFlux<D>())
 {
-    const bool separate = flux.state.extent(0) > 0;
-    const SubcellForces<D, P> forces{mesh,
-                                     separate ? flux.state : state,
-                                     separate ? flux.aux : aux,
-                                     separate ? flux.stress : stress,
-                                     separate ? flux.geom.corner : geom.corner,
-                                     flux.rec,
-                                     vnode};
+    const SubcellForces<D, P> forces = subcellForces<D, P>(mesh, state, aux, stress, geom, vnode, flux);
     StageSum<1> heat;
     heat.rate[0] = heatRate;
     heat.weight[0] = 1.0;

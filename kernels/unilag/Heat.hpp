@@ -41,6 +41,7 @@
 #include "unilag/Geometry.hpp"
 #include "unilag/Gpr.hpp"
 #include "unilag/Physics.hpp"
+#include "unilag/Reduce.hpp"
 
 namespace unilag
 {
@@ -207,6 +208,32 @@ void heatFluxes(const MeshView<D>& mesh, const BoundaryView& bc, const ConstFiel
             rate(i, 1 + d) = rJ[d];
     };
     Kokkos::parallel_for("unilag::heat::fluxes", range(mesh.nOwnedCells), cell);
+}
+
+/*! Heat entering the owned cells through isothermal walls, -sum (q.n)_f s_f over their boundary faces: the only heat
+ *  that changes the total energy (adiabatic walls pass none, interior faces cancel). For the energy balance. */
+template <int D, class P> double boundaryHeatRate(const heat::Faces<D, P>& faces)
+{
+    constexpr int NV = D + 1;
+    auto cell = KOKKOS_LAMBDA(const LO i, double(&acc)[1])
+    {
+        const heat::Side<D> a = faces.side(i);
+        if (!a.heat)
+            return;
+        for (int k = 0; k < NV; ++k)
+        {
+            const int g = faces.mesh.cellFaceGroup(i, k);
+            if (g < 0 || faces.bc.thermal(g) != ThermalIsothermal)
+                continue;
+            double fE;
+            Vec<D> fJ;
+            faces.face(i, a, k, fE, fJ);
+            acc[0] -= fE;
+        }
+    };
+    double sum[1];
+    sumReduce<1>("unilag::check::boundary_heat", faces.mesh.nOwnedCells, cell, sum);
+    return sum[0];
 }
 
 } // namespace unilag

@@ -25,6 +25,7 @@ enum class Phase : int
     CellUpdate,     //!< v, E, omega (and J) from the forces
     Halo,           //!< ghost exchanges
     Output,         //!< HDF5/XDMF dumps
+    Check,          //!< the force balance at the nodes (boundary impulse and work; every node with --check)
     Count
 };
 
@@ -32,7 +33,8 @@ enum class Phase : int
 inline const char* phaseName(Phase p)
 {
     static const char* names[] = {"geometry",      "eos",         "nodal_solve", "time_step", "reconstruction",
-                                  "strain_update", "heat_fluxes", "cell_update", "halo",      "io"};
+                                  "strain_update", "heat_fluxes", "cell_update", "halo",      "io",
+                                  "check"};
     return names[int(p)];
 }
 

@@ -70,11 +70,15 @@ template <int D, class P> bool GprOperator<D, P>::correctorUpdate(double dt, Upd
     }
     else
         moveNodes(x, v, dt, md.write("x_new"), md.m.nNodes, D);
-    ScopedTimer timer(md.timers, Phase::CellUpdate);
-    check = reduceCheck(unilag::updateCells<D, P>(md.m, md.read("state"), md.aux, md.geom, md.mass(), md.cellMaterial,
-                                                  md.materials, x, md.read("x_new"), v, dt, md.write("state_new"),
-                                                  ConstField(), md.heatRateMid, md.geomNew,
-                                                  CellFlux<D>{sm, md.auxMid, md.sigmaMid, md.geomMid, rec_}));
+    const CellFlux<D> midpoint{sm, md.auxMid, md.sigmaMid, md.geomMid, rec_};
+    {
+        ScopedTimer timer(md.timers, Phase::CellUpdate);
+        check = reduceCheck(unilag::updateCells<D, P>(md.m, md.read("state"), md.aux, md.geom, md.mass(),
+                                                      md.cellMaterial, md.materials, x, md.read("x_new"), v, dt,
+                                                      md.write("state_new"), ConstField(), md.heatRateMid, md.geomNew,
+                                                      midpoint));
+    }
+    balance_ = balanceOf(subcellForces<D, P>(md.m, sm, md.auxMid, md.sigmaMid, md.geomMid, v, midpoint));
     return true;
 }
 

@@ -69,6 +69,7 @@ template <int D, class P> struct GprModel
     Kokkos::View<double* [3], MemSpace> bcValue; //!< bc.value, writable
     Kokkos::View<double* [3], MemSpace>::HostMirror bcValueHost;
     std::vector<std::pair<int, std::unique_ptr<Expression>>> pressureLaws; //!< time-dependent imposed pressures
+    bool isothermalWalls = false; //!< some boundary imposes a temperature (heat then enters the energy balance)
     PhaseTimers timers;
 
     ConstField read(const std::string& f) const { return fields[f].getLocalViewDevice(Tpetra::Access::ReadOnly); }

@@ -13,12 +13,15 @@
  */
 #pragma once
 
+#include <map>
 #include <string>
 #include <utility>
 #include <vector>
 
+#include "solver/GprBalance.hpp"
 #include "solver/GprModel.hpp"
 #include "unilag/Heat.hpp"
+#include "unilag/NodeBalance.hpp"
 
 namespace unilag
 {
@@ -100,7 +103,6 @@ template <int D, class P> class GprOperator
      *  and left G^{n+1} in state_new. Returns the global validity extrema. Collective. */
     UpdateCheck updateCells(double dt)
     {
-        ScopedTimer timer(md_.timers, Phase::CellUpdate);
         auto x = md_.read("x");
         auto v = md_.read("v_node");
         auto xn = md_.write("x_new");
@@ -109,31 +111,22 @@ template <int D, class P> class GprOperator
         ConstField sigma;
         if constexpr (P::strain)
             sigma = md_.read("sigma");
-        return reduceCheck(unilag::updateCells<D, P>(md_.m, md_.read("state"), md_.aux, md_.geom, md_.mass(),
-                                                     md_.cellMaterial, md_.materials, x, xn, v, dt,
-                                                     md_.write("state_new"), sigma, md_.heatRate, md_.geomNew));
+        UpdateCheck check;
+        {
+            ScopedTimer timer(md_.timers, Phase::CellUpdate);
+            check = reduceCheck(unilag::updateCells<D, P>(md_.m, md_.read("state"), md_.aux, md_.geom, md_.mass(),
+                                                  md_.cellMaterial, md_.materials, x, xn, v, dt, md_.write("state_new"),
+                                                  sigma, md_.heatRate, md_.geomNew));
+        }
+        balance_ = balanceOf(subcellForces<D, P>(md_.m, md_.read("state"), md_.aux, sigma, md_.geom, v));
+        return check;
     }
 
-    //! The impulse and work of this step's nodal forces over dt, added to impulse and work. Collective.
-    void boundaryImpulse(double dt, double (&impulse)[D], double& work)
-    {
-        auto v = md_.read("v_node");
-        auto f = md_.fnode;
-        auto sum = KOKKOS_LAMBDA(const LO r, double(&acc)[D + 1])
-        {
-            for (int d = 0; d < D; ++d)
-            {
-                acc[d] += f(r, d);
-                acc[D] += f(r, d) * v(r, d);
-            }
-        };
-        double acc[D + 1];
-        sumReduce<D + 1>("unilag::diagnostics::boundary", md_.m.nOwnedNodes, sum, acc);
-        mpi::allSum(md_.comm, acc);
-        for (int d = 0; d < D; ++d)
-            impulse[d] += dt * acc[d];
-        work += dt * acc[D];
-    }
+    /*! The nodes whose force balance each update evaluates: every owned node (everyNode: --check, which asserts the
+     *  interior balance) or only those on a boundary (enough for the impulse and work). */
+    void selectBalanceNodes(bool everyNode);
+    //! The force balance (and boundary heat) of the last update's forces, global over the ranks.
+    const BalanceRates<D>& lastBalance() const { return balance_; }
 
     /*! The new state becomes the state: its ghosts are exchanged, positions and the owned cells' geometry taken
      *  over from the update, the ghosts' geometry and every cell's EOS recomputed. Collective. */
@@ -174,12 +167,18 @@ template <int D, class P> class GprOperator
 
   private:
     PicardCheck strainStep(double dt, bool midpoint);
+    BalanceRates<D> balanceOf(const SubcellForces<D, P>& forces);
     GprModel<D, P>& md_;
     Reconstruction<D> rec_; //!< order 2: the midpoint state's limited gradients
+    View<LO*> balanceNodes_; //!< owned nodes whose balance is evaluated (selectBalanceNodes)
+    Field balanceScratch_;   //!< per node: NodeBalanceLayout
+    BalanceRates<D> balance_;
+    std::map<std::string, BalanceRates<D>> stageBalance_; //!< stored stages' balances, by stage name
 };
 
 } // namespace unilag
 
 #include "solver/GprCorrector.hpp"
+#include "solver/GprNodeBalance.hpp"
 #include "solver/GprPicard.hpp"
 #include "solver/GprStages.hpp"

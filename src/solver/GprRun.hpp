@@ -20,12 +20,15 @@ namespace unilag
 struct Conservation
 {
     double mass = 0.0, momentum = 0.0, energy = 0.0;
+    double energyScale = 0.0; //!< the largest energy in play, what the energy defects are relative to
 };
 
 template <int D>
 Conservation conservation(const std::vector<double>& initial, const std::vector<double>& final_,
-                          const double (&impulse)[D], double work)
+                          const BoundaryBalance<D>& boundary)
 {
+    const double(&impulse)[D] = boundary.impulse;
+    const double work = boundary.work + boundary.heat; // the energy the boundaries gave
     Conservation c;
     c.mass = std::abs(final_[0] - initial[0]) / initial[0];
     double dp = 0.0;
@@ -37,8 +40,8 @@ Conservation conservation(const std::vector<double>& initial, const std::vector<
         std::max(final_[2 + D] + initial[2 + D], std::sqrt(2.0 * initial[0] * std::abs(initial[1 + D])));
     c.momentum = std::sqrt(dp) / std::max(momentumScale, 1e-300);
     // relative to the largest energy in play (a body at rest hit by a piston starts with none)
-    const double energyScale = std::max({std::abs(initial[1 + D]), std::abs(final_[1 + D]), std::abs(work)});
-    c.energy = std::abs(final_[1 + D] - initial[1 + D] - work) / std::max(energyScale, 1e-300);
+    c.energyScale = std::max({std::abs(initial[1 + D]), std::abs(final_[1 + D]), std::abs(work), 1e-300});
+    c.energy = std::abs(final_[1 + D] - initial[1 + D] - work) / c.energyScale;
     return c;
 }
 
@@ -66,7 +69,7 @@ template <int D, class P> ExactErrors exactErrors(const GprModel<D, P>& md, doub
 
 //! --check: conservation to round-off and the scene's error bounds; prints what failed (rank 0).
 template <int D, class P>
-int selfCheck(const GprModel<D, P>& md, const Conservation& c, double gcl, const ExactErrors& x,
+int selfCheck(const GprModel<D, P>& md, const GprSystem<D, P>& sys, const Conservation& c, const ExactErrors& x,
               const std::vector<double>& radii)
 {
     std::vector<std::string> fails;
@@ -83,7 +86,15 @@ int selfCheck(const GprModel<D, P>& md, const Conservation& c, double gcl, const
     bound("mass relative change", c.mass, 1e-12);
     bound("momentum relative change", c.momentum, 1e-12);
     bound("energy relative change", c.energy, 1e-12);
-    bound("GCL defect |m omega - |T|| / |T|", gcl, 1e-12);
+    bound("GCL defect |m omega - |T|| / |T|", sys.maxGclDefect(), 1e-12);
+    // The nodal solver's balance, from the forces the updates applied (NodeBalance.hpp): zero net force at
+    // interior nodes, the imposed traction at free, pressure and traction nodes, no work by walls.
+    const BoundaryBalance<D>& b = sys.balance();
+    bound("force imbalance at node " + std::to_string(b.worstNode) + " (t = " + jsonNumber(b.worstTime) +
+              ") relative to the forces on it",
+          b.maxImbalance, 1e-13);
+    bound("work of slip walls, symmetry planes and free surfaces relative to the energy",
+          std::abs(b.passiveWork) / c.energyScale, 1e-13);
     const Scene& scene = md.scene;
     if (scene.maxL1Density > 0.0)
         bound("L1(density) error", x.l1, scene.maxL1Density);
@@ -125,7 +136,13 @@ void writeSummary(const GprModel<D, P>& md, const GprSystem<D, P>& sys, const Ru
     s.number("t_final", r.state.t).number("wall_seconds", r.wallSeconds).number("cell_steps_per_second", cellSteps);
     s.number("mass_relative_change", c.mass).number("momentum_relative_change", c.momentum);
     s.number("energy_relative_change", c.energy).number("max_gcl_defect", sys.maxGclDefect());
-    s.number("boundary_work", sys.work());
+    const BoundaryBalance<D>& b = sys.balance();
+    std::vector<std::pair<std::string, std::string>> impulse;
+    for (int d = 0; d < D; ++d)
+        impulse.emplace_back(std::string(1, char('x' + d)), jsonNumber(b.impulse[d]));
+    s.object("boundary_impulse", impulse);
+    s.number("boundary_work", b.work).number("wall_work", b.passiveWork).number("boundary_heat", b.heat);
+    s.number("max_node_force_imbalance", b.maxImbalance);
     if (x.l1 >= 0.0)
         s.number("l1_density_error", x.l1).number("shock_radius", x.shock).number("exact_shock_radius", x.exactShock);
     std::vector<std::pair<std::string, std::string>> mean;
@@ -170,12 +187,12 @@ int runGpr(const Scene& scene, std::shared_ptr<DistributedMesh> mesh, const RunO
         writeScene(scene, (std::filesystem::path(scene.outputDirectory) / "scene.yaml").string());
     }
     MPI_Barrier(md.comm);
-    GprSystem<D, P> sys(md);
+    GprSystem<D, P> sys(md, options.check);
     if (scene.writeOutput)
         sys.openOutput(scene.outputDirectory);
     sys.start();
     const LoopResult r = runTimeLoop(sys, timeControl(scene, options), md.comm);
-    const Conservation c = conservation<D>(r.initialTotals, r.finalTotals, sys.impulse(), sys.work());
+    const Conservation c = conservation<D>(r.initialTotals, r.finalTotals, sys.balance());
     const ExactErrors x = r.failure.empty() ? exactErrors(md, r.state.t) : ExactErrors{};
     const std::vector<double> radii = boundaryRadii(md);
     writeSummary(md, sys, options, r, c, x, radii);
@@ -185,7 +202,7 @@ int runGpr(const Scene& scene, std::shared_ptr<DistributedMesh> mesh, const RunO
             std::fprintf(stderr, "unilag: error: the run went unstable: %s\n", r.failure.c_str());
         return ExitUnstable;
     }
-    return options.check ? selfCheck(md, c, sys.maxGclDefect(), x, radii) : ExitOk;
+    return options.check ? selfCheck(md, sys, c, x, radii) : ExitOk;
 }
 
 } // namespace unilag

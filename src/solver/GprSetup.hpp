@@ -83,6 +83,7 @@ template <int D, class P> std::string setupBoundaries(GprModel<D, P>& md)
         for (int d = 0; d < 3; ++d)
             vh(g, d) = b.type == BoundaryKind::Traction ? b.traction[d] : b.velocity[d];
         thermalH(g) = b.thermal == ThermalKind::Isothermal ? ThermalIsothermal : ThermalAdiabatic;
+        md.isothermalWalls = md.isothermalWalls || b.thermal == ThermalKind::Isothermal;
         tempH(g) = b.temperature;
         if (b.type == BoundaryKind::Pressure)
         {

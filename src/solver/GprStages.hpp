@@ -24,8 +24,11 @@ template <int D, class P> void GprOperator<D, P>::storeStageRates(const std::str
         sigma = md_.read("sigma");
     const SubcellForces<D, P> forces{md_.m,           md_.read("state"),   md_.aux,           sigma,
                                      md_.geom.corner, Reconstruction<D>(), md_.read("v_node")};
-    ScopedTimer timer(md_.timers, Phase::CellUpdate);
-    storeRates<D, P>(forces, md_.heatRate, md_.write(name));
+    {
+        ScopedTimer timer(md_.timers, Phase::CellUpdate);
+        storeRates<D, P>(forces, md_.heatRate, md_.write(name));
+    }
+    stageBalance_[name] = balanceOf(forces); // the forces' views are overwritten by the next stage
 }
 
 /*! Updates the owned cells from stored stages (name, weight), at most three: v, E (and J, then relaxed) from
@@ -38,10 +41,12 @@ UpdateCheck GprOperator<D, P>::updateFromStages(double dt, const std::vector<std
     if (stages.empty() || stages.size() > std::size_t(K))
         throw std::logic_error("updateFromStages: 1 to 3 stages");
     StageSum<K> sum;
+    balance_ = BalanceRates<D>();
     for (const auto& [name, weight] : stages)
     {
         sum.rate[sum.stages] = md_.read(name);
         sum.weight[sum.stages++] = weight;
+        balance_.add(stageBalance_.at(name), weight);
     }
     ScopedTimer timer(md_.timers, Phase::CellUpdate);
     auto x = md_.read("x");

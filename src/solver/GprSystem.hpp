@@ -1,6 +1,7 @@
 /*! \file GprSystem.hpp
  *  \brief The GPR solver as the time loop sees it (TimeSystem): model, operator and integrator, the retry
- *  bookkeeping of a step, output, and the conservation bookkeeping (boundary impulse and work, GCL defect).
+ *  bookkeeping of a step, output, and the conservation bookkeeping (boundary impulse and work, the force balance at
+ *  the nodes, GCL defect).
  */
 #pragma once
 
@@ -20,7 +21,13 @@ namespace unilag
 template <int D, class P> class GprSystem : public TimeSystem
 {
   public:
-    explicit GprSystem(GprModel<D, P>& model) : md_(model), op_(model), euler_(op_), midpoint_(op_) {}
+    /*! checkEveryNode: evaluate the force balance at every owned node (--check asserts it), not only at the
+     *  boundary nodes whose impulse and work the conservation needs. */
+    explicit GprSystem(GprModel<D, P>& model, bool checkEveryNode = false)
+        : md_(model), op_(model), euler_(op_), midpoint_(op_)
+    {
+        op_.selectBalanceNodes(checkEveryNode);
+    }
 
     void openOutput(const std::string& dir) { writer_ = makeWriter(md_, dir); }
     const io::XdmfWriter* writer() const { return writer_.get(); }
@@ -75,7 +82,7 @@ template <int D, class P> class GprSystem : public TimeSystem
         return diagnose(md_, stage_.check, t, dt, attempts);
     }
 
-    void acceptStep(double /*t*/, double dt, int iterations) override
+    void acceptStep(double t, double dt, int iterations) override
     {
         if constexpr (P::strain)
             if (md_.order2)
@@ -83,7 +90,7 @@ template <int D, class P> class GprSystem : public TimeSystem
         picardTotal_ += iterations;
         picardMax_ = std::max(picardMax_, iterations);
         maxGcl_ = std::max(maxGcl_, stage_.check.maxGclDefect);
-        op_.boundaryImpulse(dt, impulse_, work_);
+        balance_.accumulate(op_.lastBalance(), t, dt);
         op_.advance();
     }
 
@@ -106,8 +113,10 @@ template <int D, class P> class GprSystem : public TimeSystem
     long picardTotal() const { return picardTotal_; }
     int picardMax() const { return picardMax_; }
     double maxGclDefect() const { return maxGcl_; }
-    const double (&impulse() const)[D] { return impulse_; }
-    double work() const { return work_; }
+    //! Boundary impulse and work, wall work, boundary heat and the worst node imbalance of the accepted steps.
+    const BoundaryBalance<D>& balance() const { return balance_; }
+    const double (&impulse() const)[D] { return balance_.impulse; }
+    double work() const { return balance_.work; }
 
   private:
     GprModel<D, P>& md_;
@@ -119,8 +128,7 @@ template <int D, class P> class GprSystem : public TimeSystem
     long picardTotal_ = 0;
     int picardMax_ = 0;
     double maxGcl_ = 0.0;
-    double impulse_[D] = {};
-    double work_ = 0.0;
+    BoundaryBalance<D> balance_;
 };
 
 } // namespace unilag
