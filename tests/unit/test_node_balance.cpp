@@ -1,0 +1,129 @@
+// The force balance at the nodes (NodeBalance.hpp) that --check asserts, on a 2D box of distorted triangles with a
+// pressure gradient: slip walls on three sides and an imposed pressure on x = 1. After a real step (GprSystem):
+//  - the balance of the forces the update applied holds to round-off: zero net force at interior nodes, the imposed
+//    traction at the pressure nodes, no work by the walls;
+//  - and it fails where it should: a node velocity off the nodal solution at one interior node, a normal velocity at
+//    a wall node, or a different imposed pressure are each caught at the node they touch.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+#include <vector>
+
+#include "SolverHarness.hpp"
+
+namespace
+{
+
+using unilag::LO;
+using P = unilag::PhysicsHydro;
+constexpr int D = 2;
+
+struct BalanceFixture
+{
+    static unilag::Scene scene()
+    {
+        auto s = unilag_test::gasScene(D, unilag_test::constant(1.0), unilag_test::expression("2 - x + 0.3 * y"),
+                                       {unilag_test::expression("0.1 * y"), unilag_test::constant(0.0)});
+        for (const char* wall : {"x0", "y0", "y1"})
+            s.boundaries[wall] = unilag_test::slipWall();
+        unilag::BoundarySpec open;
+        open.type = unilag::BoundaryKind::Pressure;
+        open.pressure = unilag_test::constant(0.5);
+        s.boundaries["x1"] = open;
+        return s;
+    }
+    static unilag::GlobalMesh mesh()
+    {
+        auto h = unilag_test::squareMesh(8, 0.25, 77);
+        unilag_test::connect<D>(h, unilag_test::wallGroup);
+        return unilag_test::globalMesh<D>(h, {"x0", "x1", "y0", "y1"});
+    }
+};
+
+//! The balance of the model's current forces (state, aux and geometry at t^n; node velocities v) at every owned node.
+unilag::NodeBalanceRates<D> balance(const unilag_test::SolverHarness<D>& hs, const unilag::ConstField& v)
+{
+    const auto& md = hs.model;
+    const auto forces = unilag::subcellForces<D, P>(md.m, md.read("state"), md.aux, unilag::ConstField(), md.geom, v);
+    unilag::View<LO*> nodes("nodes", md.m.nOwnedNodes);
+    Kokkos::parallel_for(unilag::range(md.m.nOwnedNodes), KOKKOS_LAMBDA(const LO r) { nodes(r) = r; });
+    unilag::Field out("out", md.m.nOwnedNodes, unilag::NodeBalanceLayout<D>::ncomp);
+    return unilag::nodeBalance<D, P>(forces, md.bc, nodes, out);
+}
+
+//! v_node with one component of one node changed by dv.
+unilag::Field perturbed(const unilag_test::SolverHarness<D>& hs, LO node, int d, double dv)
+{
+    const auto v = hs.model.read("v_node");
+    unilag::Field w("w", v.extent(0), v.extent(1));
+    Kokkos::deep_copy(w, v);
+    Kokkos::parallel_for(unilag::range(1), KOKKOS_LAMBDA(const LO) { w(node, d) += dv; });
+    return w;
+}
+
+//! A node by its wall bits (HostMesh::wall), the first one whose bits equal `bits`.
+LO nodeWithWalls(const unilag_test::SolverHarness<D>& hs, int bits)
+{
+    const auto h = unilag_test::squareMesh(8, 0.25, 77);
+    const auto& dm = *hs.model.mesh;
+    for (LO r = 0; r < dm.nOwnedNodes; ++r)
+        if (h.wall[dm.nodeGid[r]] == bits)
+            return r;
+    return -1;
+}
+
+TEST(NodeBalance, HoldsAfterAStepAndCatchesEachFault)
+{
+    unilag_test::SolverHarness<D> hs(BalanceFixture::scene(), BalanceFixture::mesh());
+    ASSERT_EQ(hs.error, "");
+    unilag::GprSystem<D, P> system(hs.model, true);
+    system.start();
+    const LO interior = nodeWithWalls(hs, 0), wall = nodeWithWalls(hs, 1 << 2), open = nodeWithWalls(hs, 1 << 1);
+    ASSERT_GE(interior, 0);
+    ASSERT_GE(wall, 0);
+    ASSERT_GE(open, 0);
+    const double dt = unilag_test::loopStep(
+        system, 0.0, 0,
+        [&](double)
+        {
+            const auto v = hs.model.read("v_node");
+            const auto exact = balance(hs, v);
+            EXPECT_LT(exact.maxImbalance, 1e-14) << "at node " << exact.worstNode;
+            EXPECT_LT(std::abs(exact.passiveWork), 1e-14);
+            // the open side pushes (p_ext = 0.5 against ~1): a real impulse, and work
+            EXPECT_GT(std::abs(exact.impulse[0]), 0.1);
+
+            const double dv = 1e-6; // against velocities ~0.1-1: a nodal solution off in the 6th digit
+            const auto offInterior = balance(hs, perturbed(hs, interior, 0, dv));
+            EXPECT_EQ(offInterior.worstNode, interior);
+            EXPECT_GT(offInterior.maxImbalance, 1e-8);
+            const auto intoWall = balance(hs, perturbed(hs, wall, 1, dv)); // y = 0: normal is y
+            EXPECT_EQ(intoWall.worstNode, wall);
+            EXPECT_GT(intoWall.maxImbalance, 1e-8);
+            EXPECT_GT(std::abs(intoWall.passiveWork), 1e-9);
+            const auto offOpen = balance(hs, perturbed(hs, open, 0, dv));
+            EXPECT_EQ(offOpen.worstNode, open);
+            EXPECT_GT(offOpen.maxImbalance, 1e-8);
+
+            // an imposed pressure other than the one the nodes were solved with shows at the open side
+            auto& md = hs.model;
+            const auto& names = md.mesh->boundaryNames;
+            const int x1 = int(std::find(names.begin(), names.end(), "x1") - names.begin());
+            ASSERT_LT(x1, int(names.size()));
+            md.bcValueHost(x1, 0) = 0.6;
+            Kokkos::deep_copy(md.bcValue, md.bcValueHost);
+            const auto wrongTraction = balance(hs, v);
+            EXPECT_GT(wrongTraction.maxImbalance, 1e-3);
+            md.bcValueHost(x1, 0) = 0.5;
+            Kokkos::deep_copy(md.bcValue, md.bcValueHost);
+        });
+    ASSERT_GT(dt, 0.0);
+    // the run's own bookkeeping over the accepted step
+    EXPECT_LT(system.balance().maxImbalance, 1e-14);
+    EXPECT_GE(system.balance().worstNode, 0);
+    EXPECT_GT(std::abs(system.balance().work), 0.0);
+}
+
+} // namespace
