@@ -2,7 +2,7 @@
 """Compare the final cell fields of unilag runs (e.g. on 1, 2, 3 ranks), matched by global cell id.
 
 usage: compare_runs.py RTOL DIR_A DIR_B [DIR_C ...]
-       compare_runs.py --ignore NAME[,NAME ...] RTOL DIR_A DIR_B [DIR_C ...]
+       compare_runs.py [--ignore NAME[,NAME ...]] RTOL DIR_A DIR_B [DIR_C ...] [-- DIR_D DIR_E [...] ...]
 Exits 1 if any field differs by more than RTOL relative to its largest magnitude; prints the differences.
 
 Every dataset of the last dump (unilag_NNNNNN.h5) is compared, not a fixed list: the runs must have the same last dump
@@ -10,7 +10,8 @@ Every dataset of the last dump (unilag_NNNNNN.h5) is compared, not a fixed list:
 node dataset) through each cell's corners (connectivity), since node and cell numbering depend on the partition;
 `rank` must be present but its values are not compared (they are the partition). summary.json must agree too:
 'status' and 'steps' exactly, 't_final' (and the dump's XDMF time, where there is one) within RTOL.
-RTOL = 0 asks for bitwise-identical results. --ignore leaves the named datasets out (present or not), e.g. the GPR
+RTOL = 0 asks for bitwise-identical results. `--` starts another group, compared within itself (one process for
+several comparisons). --ignore leaves the named datasets out (present or not), e.g. the GPR
 fields when an Euler run is compared with a GPR one.
 """
 import glob
@@ -85,20 +86,13 @@ def rel(a, b, scale):
     return abs(a - b) / max(abs(scale), 1e-300)
 
 
-def main():
-    args = sys.argv[1:]
-    ignore = set()
-    if args and args[0] == "--ignore" and len(args) > 1:
-        ignore = set(args[1].split(","))
-        args = args[2:]
-    if len(args) < 3:
-        sys.exit(__doc__)
-    rtol = float(args[0])
-    ref_dir = args[1]
+def compare(dirs, ignore):
+    """The largest relative difference of dirs[1:] from dirs[0]; exits on a structural difference."""
+    ref_dir = dirs[0]
     ref_name, ref_t, ref = last_dump(ref_dir, ignore)
     ref_sum = summary(ref_dir)
     worst = 0.0
-    for d in args[2:]:
+    for d in dirs[1:]:
         name, t, other = last_dump(d, ignore)
         s = summary(d)
         if os.path.basename(name) != os.path.basename(ref_name):
@@ -125,6 +119,27 @@ def main():
                 diff = np.inf
             worst = max(worst, diff)
             print(f"{name} vs {ref_name}: {k} max relative difference {diff:.3e}")
+    return worst
+
+
+def main():
+    args = sys.argv[1:]
+    ignore = set()
+    if args and args[0] == "--ignore" and len(args) > 1:
+        ignore = set(args[1].split(","))
+        args = args[2:]
+    if len(args) < 3:
+        sys.exit(__doc__)
+    rtol = float(args[0])
+    groups = [[]]
+    for a in args[1:]:
+        if a == "--":
+            groups.append([])
+        else:
+            groups[-1].append(a)
+    if any(len(g) < 2 for g in groups):
+        sys.exit(__doc__)
+    worst = max(compare(g, ignore) for g in groups)
     if not worst <= rtol:
         fail(f"{worst:.3e} > {rtol:.1e}")
     print(f"compare_runs: PASS ({worst:.3e} <= {rtol:.1e})")
