@@ -33,7 +33,7 @@ def fail(msg):
 
 
 def last_dump(d, ignore):
-    """The last dump of run folder d: its name, time (from its .xmf, or None), and datasets in a partition-free order."""
+    """The last dump of folder d: its name, time (from its .xmf, or None), datasets in a partition-free order."""
     files = sorted(glob.glob(f"{d}/unilag_*.h5"))
     if not files:
         sys.exit(f"compare_runs: no unilag_*.h5 in {d}")
