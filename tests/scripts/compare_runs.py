@@ -2,7 +2,7 @@
 """Compare the final cell fields of unilag runs (e.g. on 1, 2, 3 ranks), matched by global cell id.
 
 usage: compare_runs.py RTOL DIR_A DIR_B [DIR_C ...]
-       compare_runs.py [--ignore NAME[,NAME ...]] RTOL DIR_A DIR_B [DIR_C ...] [-- DIR_D DIR_E [...] ...]
+       compare_runs.py RTOL DIR_A DIR_B [DIR_C ...] [-- DIR_D DIR_E [...] ...]
 Exits 1 if any field differs by more than RTOL relative to its largest magnitude; prints the differences.
 
 Every dataset of the last dump (unilag_NNNNNN.h5) is compared, not a fixed list: the runs must have the same last dump
@@ -11,8 +11,7 @@ node dataset) through each cell's corners (connectivity), since node and cell nu
 `rank` must be present but its values are not compared (they are the partition). summary.json must agree too:
 'status' and 'steps' exactly, 't_final' (and the dump's XDMF time, where there is one) within RTOL.
 RTOL = 0 asks for bitwise-identical results. `--` starts another group, compared within itself (one process for
-several comparisons). --ignore leaves the named datasets out (present or not), e.g. the GPR
-fields when an Euler run is compared with a GPR one.
+several comparisons).
 """
 import glob
 import json
@@ -32,7 +31,7 @@ def fail(msg):
     sys.exit(1)
 
 
-def last_dump(d, ignore):
+def last_dump(d):
     """The last dump of folder d: its name, time (from its .xmf, or None), datasets in a partition-free order."""
     files = sorted(glob.glob(f"{d}/unilag_*.h5"))
     if not files:
@@ -52,7 +51,7 @@ def last_dump(d, ignore):
     corners = data["connectivity"][order]
     fields = {"global_id": gid[order]}
     for k, a in data.items():
-        if k in ("global_id", "connectivity") or k in ignore:
+        if k in ("global_id", "connectivity"):
             continue
         if k in PARTITION:
             fields[k] = None
@@ -86,14 +85,14 @@ def rel(a, b, scale):
     return abs(a - b) / max(abs(scale), 1e-300)
 
 
-def compare(dirs, ignore):
+def compare(dirs):
     """The largest relative difference of dirs[1:] from dirs[0]; exits on a structural difference."""
     ref_dir = dirs[0]
-    ref_name, ref_t, ref = last_dump(ref_dir, ignore)
+    ref_name, ref_t, ref = last_dump(ref_dir)
     ref_sum = summary(ref_dir)
     worst = 0.0
     for d in dirs[1:]:
-        name, t, other = last_dump(d, ignore)
+        name, t, other = last_dump(d)
         s = summary(d)
         if os.path.basename(name) != os.path.basename(ref_name):
             fail(f"last dump {name} vs {ref_name}: a different number of dumps")
@@ -124,10 +123,6 @@ def compare(dirs, ignore):
 
 def main():
     args = sys.argv[1:]
-    ignore = set()
-    if args and args[0] == "--ignore" and len(args) > 1:
-        ignore = set(args[1].split(","))
-        args = args[2:]
     if len(args) < 3:
         sys.exit(__doc__)
     rtol = float(args[0])
@@ -139,7 +134,7 @@ def main():
             groups[-1].append(a)
     if any(len(g) < 2 for g in groups):
         sys.exit(__doc__)
-    worst = max(compare(g, ignore) for g in groups)
+    worst = max(compare(g) for g in groups)
     if not worst <= rtol:
         fail(f"{worst:.3e} > {rtol:.1e}")
     print(f"compare_runs: PASS ({worst:.3e} <= {rtol:.1e})")
