@@ -9,7 +9,7 @@ endforeach()
 set_tests_properties(xdmf_writer_np2 PROPERTIES FIXTURES_SETUP xdmf_out)
 if(PVPYTHON)
   add_test(NAME paraview_reads_density COMMAND ${PVPYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/io/pv_read.py
-           ${WORK}/mpi_np2/unilag.xmf density)
+           ${WORK}/impact2d_o2_np2/unilag.xmf density)
   set_tests_properties(paraview_reads_density PROPERTIES FIXTURES_REQUIRED mpi LABELS io)
   # The writer's two polylines (12 segments, 14 nodes) with the node field of its last dump (0.5 node - 6).
   add_test(NAME paraview_reads_polyline COMMAND ${PVPYTHON} ${CMAKE_CURRENT_SOURCE_DIR}/io/pv_read.py
