@@ -10,14 +10,15 @@
 namespace unilag
 {
 
-/*! The physics variant a scene needs, from its materials: G_e where some material has shear stiffness, the
- *  plasticity law where some material uses it, J where some material conducts heat. A scene pays only for the
- *  equations its materials need (Physics.hpp). */
+/*! The physics variant a scene needs, from the materials its regions use (a declared but unused material costs
+ *  nothing): G_e where some material has shear stiffness, the plasticity law where some material uses it, J where
+ *  some material conducts heat. A scene pays only for the equations its materials need (Physics.hpp). */
 template <int D> int runDim(const Scene& scene, std::shared_ptr<DistributedMesh> mesh, const RunOptions& options)
 {
     bool strain = false, plastic = false, heat = false;
-    for (const auto& [name, spec] : scene.materials)
+    for (const auto& [region, regionSpec] : scene.regions)
     {
+        const MaterialSpec& spec = scene.materials.at(regionSpec.material); // the reader checked it exists
         strain |= spec.strainLaw != RelaxationLaw::Fluid;
         plastic |= spec.strainLaw == RelaxationLaw::Plastic;
         heat |= spec.heatConduction;

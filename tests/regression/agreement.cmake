@@ -109,3 +109,14 @@ set_tests_properties(compare_runs_fails_datasets PROPERTIES FIXTURES_REQUIRED "v
                      PASS_REGULAR_EXPRESSION "compare_runs: FAIL, datasets differ: only in .*'temperature'.*'G'")
 set_tests_properties(compare_runs_fails_fields compare_runs_fails_steps compare_runs_fails_datasets PROPERTIES
                      LABELS regression)
+# A scene pays only for the equations of the materials its regions use: the 2D hydro scene with an unused plastic,
+# heat-conducting material declared gives bitwise the hydro run (before, it ran the strain and heat equations).
+string(REPLACE "materials.gas." "materials.spare." SPARE "${VARIANT_plastic_heat}")
+add_test(NAME unused_material_run COMMAND ${UNILAG} run ${SCENES}/variants2d.yaml --quiet --check
+         --set materials.spare.eos=ideal_gas --set materials.spare.gamma=1.4 ${SPARE} --output ${WORK}/unused_material)
+set_tests_properties(unused_material_run PROPERTIES FIXTURES_SETUP unused_material ENVIRONMENT "OMP_NUM_THREADS=1"
+                     LABELS regression)
+add_test(NAME unused_material_costs_nothing COMMAND ${PYTHON} ${SCRIPTS}/compare_runs.py 0
+         ${WORK}/variant2d_hydro_o1_np1 ${WORK}/unused_material)
+set_tests_properties(unused_material_costs_nothing PROPERTIES FIXTURES_REQUIRED "unused_material;variant2d_hydro"
+                     LABELS regression)
