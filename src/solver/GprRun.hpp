@@ -67,6 +67,36 @@ template <int D, class P> ExactErrors exactErrors(const GprModel<D, P>& md, doub
     return e;
 }
 
+/*! The cells tile the domain: |sum_i |T_i| - (1/D) sum_f x_f . A_f| / sum_i |T_i| over the boundary faces f (centroid
+ *  x_f, outward area vector A_f = -D c_k of the face opposite corner k). Exact for simplices up to round-off (the
+ *  divergence theorem per cell; interior faces cancel), so a node moved differently by two cells or two ranks shows.
+ *  Mass needs no such check: m_i is constant and omega_i = |T_i| / m_i by construction. Collective. */
+template <int D, class P> double volumeIdentityDefect(const GprModel<D, P>& md)
+{
+    constexpr int NV = D + 1;
+    const MeshView<D> mesh = md.m;
+    auto x = md.read("x");
+    auto corner = md.geom.corner;
+    auto volume = md.geom.volume;
+    auto sum = KOKKOS_LAMBDA(const LO i, double(&acc)[2])
+    {
+        acc[0] += volume(i);
+        for (int k = 0; k < NV; ++k)
+        {
+            if (mesh.cellFaceGroup(i, k) < 0)
+                continue;
+            for (int j = 0; j < NV; ++j)
+                if (j != k)
+                    for (int d = 0; d < D; ++d) // (1/D) x_f . A_f with x_f the mean of the face's D nodes
+                        acc[1] -= x(mesh.cellNodes(i, j), d) * corner(i, k * D + d) / D;
+        }
+    };
+    double v[2];
+    sumReduce<2>("unilag::check::volume_identity", mesh.nOwnedCells, sum, v);
+    mpi::allSum(md.comm, v);
+    return std::abs(v[0] - v[1]) / v[0];
+}
+
 //! --check: conservation to round-off and the scene's error bounds; prints what failed (rank 0).
 template <int D, class P>
 int selfCheck(const GprModel<D, P>& md, const GprSystem<D, P>& sys, const Conservation& c, const ExactErrors& x,
@@ -87,6 +117,7 @@ int selfCheck(const GprModel<D, P>& md, const GprSystem<D, P>& sys, const Conser
     bound("momentum relative change", c.momentum, 1e-12);
     bound("energy relative change", c.energy, 1e-12);
     bound("GCL defect |m omega - |T|| / |T|", sys.maxGclDefect(), 1e-12);
+    bound("volume identity |sum |T_i| - boundary integral of x.n / D| / sum |T_i|", volumeIdentityDefect(md), 1e-13);
     // The nodal solver's balance, from the forces the updates applied (NodeBalance.hpp): zero net force at
     // interior nodes, the imposed traction at free, pressure and traction nodes, no work by walls.
     const BoundaryBalance<D>& b = sys.balance();
@@ -142,7 +173,7 @@ void writeSummary(const GprModel<D, P>& md, const GprSystem<D, P>& sys, const Ru
         impulse.emplace_back(std::string(1, char('x' + d)), jsonNumber(b.impulse[d]));
     s.object("boundary_impulse", impulse);
     s.number("boundary_work", b.work).number("wall_work", b.passiveWork).number("boundary_heat", b.heat);
-    s.number("max_node_force_imbalance", b.maxImbalance);
+    s.number("max_node_force_imbalance", b.maxImbalance).number("volume_identity_defect", volumeIdentityDefect(md));
     if (x.l1 >= 0.0)
         s.number("l1_density_error", x.l1).number("shock_radius", x.shock).number("exact_shock_radius", x.exactShock);
     std::vector<std::pair<std::string, std::string>> mean;
