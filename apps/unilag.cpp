@@ -143,7 +143,10 @@ int main(int argc, char** argv)
         {
             unilag::Scene scene = unilag::readScene(args.scene, args.sets);
             if (!args.output.empty())
+            {
                 scene.outputDirectory = args.output;
+                scene.outputSource = "--output";
+            }
             unilag::RunOptions options;
             options.check = args.check;
             options.progress = !args.quiet;

@@ -141,6 +141,7 @@ struct Scene
     Limiter limiter = Limiter::BarthJespersen; //!< order 2 only
 
     std::string outputDirectory = "output";
+    std::string outputSource = "output folder"; //!< where outputDirectory came from, for messages ("--output", a key)
     double outputInterval = 0.0; //!< 0: first and last state only
     bool writeOutput = true;
 
