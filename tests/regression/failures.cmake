@@ -121,3 +121,10 @@ set_tests_properties(error_boundary_unknown error_boundary_missing error_region_
                      error_cli_set_unknown_key error_cli_output_proc error_cli_output_file error_mpi_cli_unknown_option
                      PROPERTIES LABELS regression)
 set_tests_properties(error_mpi_boundary_unknown error_mpi_cli_unknown_option PROPERTIES LABELS "regression;mpi")
+
+# A re-run into the same folder: a long run (4 dumps) then a short one (2 dumps). The short run removes the long
+# run's outputs by name and nothing else; see expect_rerun_clears.sh for each assertion.
+add_test(NAME output_rerun_clears COMMAND bash ${SCRIPTS}/expect_rerun_clears.sh ${WORK}/rerun
+         "--set time.end=0.3 --set output.interval=0.1" "--set time.end=0.1 --set output.interval=0.1"
+         -- ${UNILAG} run ${SMALL_SEDOV})
+set_tests_properties(output_rerun_clears PROPERTIES LABELS regression)
