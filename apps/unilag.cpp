@@ -31,7 +31,9 @@ options:
   --threads N        Kokkos threads per rank (default: OMP_NUM_THREADS)
   --quiet            no progress line
 
-output: <DIR>/unilag.xmf (open in ParaView), unilag_NNNNNN.h5, scene.yaml (resolved scene), summary.json.
+output: <DIR>/unilag.xmf (open in ParaView), unilag_NNNNNN.h5, scene.yaml (resolved scene), summary.json,
+        steps.csv. Once the input is validated, a run removes these files of an earlier run from DIR (by name:
+        unilag.xmf, unilag_NNNNNN.h5/.xmf, summary.json, steps.csv, scene.yaml) and nothing else.
 exit codes: 0 ok, 2 bad input, 3 check failed, 4 the run went unstable (with a diagnosis).
 )";
 
@@ -143,7 +145,10 @@ int main(int argc, char** argv)
         {
             unilag::Scene scene = unilag::readScene(args.scene, args.sets);
             if (!args.output.empty())
+            {
                 scene.outputDirectory = args.output;
+                scene.outputSource = "--output";
+            }
             unilag::RunOptions options;
             options.check = args.check;
             options.progress = !args.quiet;

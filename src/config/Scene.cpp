@@ -13,6 +13,8 @@
 
 #include "unilag/Gpr.hpp"
 
+#include "io/OutputFolder.hpp"
+#include "physics/Exact.hpp"
 #include "physics/Expression.hpp"
 
 namespace unilag
@@ -327,6 +329,7 @@ void readOutput(ConfigNode& root, Scene& s)
     s.outputDirectory = o.text("directory", "output/" + s.name);
     if (s.outputDirectory.empty())
         o.fail("directory", "must not be empty");
+    s.outputSource = s.file + ": key 'output.directory'";
     s.outputInterval = o.nonNegative("interval", 0.0);
     s.writeOutput = o.boolean("enabled", true);
     o.rejectUnknown();
@@ -342,6 +345,17 @@ void readExact(ConfigNode& root, Scene& s)
     s.exactTable = resolvePath(s.directory, x.text("table", "", sedov));
     if (sedov && !fs::exists(s.exactTable))
         x.fail("table", "file not found: " + s.exactTable);
+    if (sedov)
+    {
+        try
+        {
+            RadialProfile check(s.exactTable); // read it now, not at the end of the run
+        }
+        catch (const InputError& e)
+        {
+            x.fail("table", e.what());
+        }
+    }
     s.exactShockRadius = x.positive("shock_radius", 1.0, sedov);
     s.exactTime = x.positive("time", 1.0);
     if (x.has("boundary_radius"))
@@ -390,6 +404,9 @@ Scene readScene(const std::string& file, const std::vector<std::string>& overrid
 
 void writeScene(const Scene& scene, const std::string& file)
 {
+    // The run's first write (rank 0, the input validated): the previous run's own outputs go first, so that no
+    // dump of a longer earlier run survives beside this run's.
+    io::removeRunOutputs(fs::path(file).parent_path().string());
     Teuchos::writeParameterListToYamlFile(scene.resolved, file);
 }
 

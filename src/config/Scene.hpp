@@ -141,6 +141,7 @@ struct Scene
     Limiter limiter = Limiter::BarthJespersen; //!< order 2 only
 
     std::string outputDirectory = "output";
+    std::string outputSource = "output folder"; //!< where outputDirectory came from, for messages ("--output", a key)
     double outputInterval = 0.0; //!< 0: first and last state only
     bool writeOutput = true;
 
@@ -160,7 +161,9 @@ struct Scene
  *  \param overrides "key.path=value" strings from --set (dots separate nested keys). */
 Scene readScene(const std::string& file, const std::vector<std::string>& overrides);
 
-//! Write the resolved scene as YAML.
+/*! \brief Write the resolved scene as YAML: the first file a run writes, into its output folder, once the input is
+ *  validated (rank 0). It first removes the previous run's own outputs from that folder (io::removeRunOutputs:
+ *  unilag.xmf, unilag_NNNNNN.h5/.xmf, summary.json, steps.csv, scene.yaml; nothing else). */
 void writeScene(const Scene& scene, const std::string& file);
 
 } // namespace unilag

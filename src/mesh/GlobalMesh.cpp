@@ -311,4 +311,39 @@ GlobalMesh loadMesh(const Scene& scene)
     return m;
 }
 
+namespace
+{
+
+std::string joined(const std::vector<std::string>& names)
+{
+    std::string s;
+    for (const auto& n : names)
+        s += (s.empty() ? "" : ", ") + n;
+    return s.empty() ? "none" : s;
+}
+
+//! One kind of group: the scene's keys (section.name) against the mesh's groups of that kind.
+template <class Map>
+void matchGroups(const Scene& scene, const std::string& source, const char* section, const char* kind,
+                 const char* missing, const Map& keys, const std::vector<std::string>& groups)
+{
+    for (const auto& [name, spec] : keys)
+        if (std::find(groups.begin(), groups.end(), name) == groups.end())
+            throw InputError(scene.file + ": key '" + section + "." + name + "': no " + kind + " physical group '" +
+                             name + "' in mesh " + source + " (it has: " + joined(groups) + ")");
+    for (const auto& g : groups)
+        if (!keys.count(g))
+            throw InputError(scene.file + ": key '" + section + "': mesh " + source + " has a " + kind +
+                             " physical group '" + g + "' with no " + missing + " (add " + section + "." + g + ")");
+}
+
+} // namespace
+
+void matchScene(const Scene& scene, const GlobalMesh& mesh)
+{
+    const std::string source = scene.geometry.empty() ? scene.meshFile : scene.geometry;
+    matchGroups(scene, source, "regions", "region", "initial state", scene.regions, mesh.regionNames);
+    matchGroups(scene, source, "boundaries", "boundary", "condition", scene.boundaries, mesh.boundaryNames);
+}
+
 } // namespace unilag

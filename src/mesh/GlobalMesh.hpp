@@ -34,4 +34,9 @@ struct GlobalMesh
  *  Throws InputError naming the file and the element. */
 GlobalMesh loadMesh(const Scene& scene);
 
+/*! \brief The scene's regions and boundaries against the mesh's physical groups, both ways: a scene name with no
+ *  group, and a group with no region (initial state) or no boundary condition. Throws InputError naming the scene
+ *  file, the key, the name and the mesh, with the groups the mesh has. */
+void matchScene(const Scene& scene, const GlobalMesh& mesh);
+
 } // namespace unilag

@@ -37,28 +37,47 @@ template <int D, class P> void totals(const GprModel<D, P>& md, double (&out)[D 
     mpi::allSum(md.comm, out);
 }
 
-//! The diagnosis of a rejected update: the worst cell, where it started, and its state. Collective.
+/*! The diagnosis of a rejected update: the bad cell with the lowest global id (each rank's check holds its bad
+ *  cell of lowest local index, and owned cells are sorted by global id, so the text is the same on any number of
+ *  ranks), where it started, and its state. Collective. */
 template <int D, class P>
 std::string diagnose(const GprModel<D, P>& md, const UpdateCheck& check, double t, double dt, int attempts)
 {
     using S = StateLayout<D, P>;
     std::string local;
-    if (check.worstCell >= 0)
+    const double gid = check.worstCell >= 0 ? double(md.mesh->cellGid[check.worstCell]) : 1e300;
+    const int owner = mpi::argMinRank(md.comm, gid); // collective: every rank calls it
+    if (check.worstCell >= 0 && owner == md.rank)
     {
         const auto& dm = *md.mesh;
         const LO i = check.worstCell;
         auto sn = md.fields["state_new"].getLocalViewHost(Tpetra::Access::ReadOnly);
         auto vol = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), md.geom.volume);
+        auto volNew = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), md.geomNew.volume);
+        auto mats = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), md.materials);
+        auto matOf = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), md.cellMaterial);
+        const Material& m = mats(matOf(i));
+        // The admissibility test of the update (CellUpdateApply.hpp), on this cell.
+        Vec<D> v, J = Vec<D>::zero();
+        for (int d = 0; d < D; ++d)
+            v[d] = sn(i, S::vel + d);
+        gpr::Sym3 G = gpr::identity(1.0);
+        if constexpr (P::strain)
+            G = loadSym3(sn, i, S::G);
+        if constexpr (P::heat)
+            for (int d = 0; d < D; ++d)
+                J[d] = sn(i, S::J + d);
+        const double rho = 1.0 / sn(i, S::omega);
+        const double eps = internalEnergy<D, P>(m, sn(i, S::energy), v, G, J);
+        const double c2 = gpr::soundSpeed2(m.eos, rho, gpr::pressure(m.eos, rho, eps));
         std::ostringstream os;
+        os.precision(6);
         double c[3];
         initialCentroid<D>(dm, i, c);
-        double kin = 0.0;
-        for (int d = 0; d < D; ++d)
-            kin += 0.5 * sn(i, S::vel + d) * sn(i, S::vel + d);
         os << "cell " << dm.cellGid[i] << " (initial centroid " << c[0] << ", " << c[1] << ", " << c[2]
            << ") at t = " << t << " after " << attempts << " halvings of dt (last dt " << dt << "): volume ratio "
-           << check.minVolumeRatio << ", specific internal energy " << sn(i, S::energy) - kin << ", density "
-           << 1.0 / sn(i, S::omega) << ", volume " << vol(i);
+           << volNew(i) / vol(i) << " (volume " << vol(i) << " -> " << volNew(i) << "), density " << rho
+           << ", specific internal energy " << eps << ", squared sound speed " << c2;
         local = os.str();
     }
     return mpi::firstMessage(md.comm, local);

@@ -4,6 +4,7 @@
 #include <cstdio>
 
 #include "core/Mpi.hpp"
+#include "io/OutputFolder.hpp"
 #include "mesh/DistributedMesh.hpp"
 #include "mesh/GlobalMesh.hpp"
 
@@ -20,7 +21,12 @@ int runScene(const Scene& scene, const RunOptions& options, const Teuchos::RCP<c
     {
         try
         {
+            // Before the mesh (which can take a while): a folder the outputs cannot go to is bad input too.
+            const std::string problem = io::outputFolderProblem(scene.outputDirectory);
+            if (!problem.empty())
+                throw InputError(scene.outputSource + " '" + scene.outputDirectory + "': " + problem);
             global = loadMesh(scene);
+            matchScene(scene, global);
         }
         catch (const InputError& e)
         {

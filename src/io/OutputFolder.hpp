@@ -1,0 +1,22 @@
+/*! \file OutputFolder.hpp
+ *  \brief The run's output folder: can it be written (checked before anything is), and the previous run's own
+ *  outputs removed from it at the start of a new run.
+ */
+#pragma once
+
+#include <string>
+#include <vector>
+
+namespace unilag::io
+{
+
+/*! \brief Why \p dir cannot serve as an output folder ("" if it can): a path through a regular file, a folder
+ *  that cannot be created or written. Creates nothing that remains (it probes by creating and removing an entry). */
+std::string outputFolderProblem(const std::string& dir);
+
+/*! \brief Removes from \p dir the files a run writes, by their names: unilag.xmf, unilag_NNNNNN.h5 and
+ *  unilag_NNNNNN.xmf (the dumps), summary.json, steps.csv, scene.yaml. Nothing else is touched (not other files,
+ *  not folders). Returns the names removed. */
+std::vector<std::string> removeRunOutputs(const std::string& dir);
+
+} // namespace unilag::io
