@@ -13,7 +13,6 @@
 
 #include "unilag/Gpr.hpp"
 
-#include "io/OutputFolder.hpp"
 #include "physics/Exact.hpp"
 #include "physics/Expression.hpp"
 
@@ -404,9 +403,6 @@ Scene readScene(const std::string& file, const std::vector<std::string>& overrid
 
 void writeScene(const Scene& scene, const std::string& file)
 {
-    // The run's first write (rank 0, the input validated): the previous run's own outputs go first, so that no
-    // dump of a longer earlier run survives beside this run's.
-    io::removeRunOutputs(fs::path(file).parent_path().string());
     Teuchos::writeParameterListToYamlFile(scene.resolved, file);
 }
 

@@ -161,9 +161,7 @@ struct Scene
  *  \param overrides "key.path=value" strings from --set (dots separate nested keys). */
 Scene readScene(const std::string& file, const std::vector<std::string>& overrides);
 
-/*! \brief Write the resolved scene as YAML: the first file a run writes, into its output folder, once the input is
- *  validated (rank 0). It first removes the previous run's own outputs from that folder (io::removeRunOutputs:
- *  unilag.xmf, unilag_NNNNNN.h5/.xmf, summary.json, steps.csv, scene.yaml; nothing else). */
+//! Write the resolved scene as YAML (a run writes it into its output folder, rank 0).
 void writeScene(const Scene& scene, const std::string& file);
 
 } // namespace unilag

@@ -8,6 +8,7 @@
 #include <filesystem>
 #include <fstream>
 
+#include "io/OutputFolder.hpp"
 #include "solver/GprSetup.hpp"
 #include "solver/GprSystem.hpp"
 #include "solver/RunOptions.hpp"
@@ -215,6 +216,8 @@ int runGpr(const Scene& scene, std::shared_ptr<DistributedMesh> mesh, const RunO
     if (md.rank == 0)
     {
         std::filesystem::create_directories(scene.outputDirectory);
+        // the previous run's own outputs (by name; nothing else), so that no dump of a longer run survives
+        io::removeRunOutputs(scene.outputDirectory);
         writeScene(scene, (std::filesystem::path(scene.outputDirectory) / "scene.yaml").string());
     }
     MPI_Barrier(md.comm);
