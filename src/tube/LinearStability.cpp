@@ -235,6 +235,37 @@ Onset criticalFlutterSpeed(const TubeDiscretisation& disc, double beta, const Sc
     return LinearStability(disc, beta).firstInstability(scan);
 }
 
+std::vector<std::vector<Mode>> trackModes(const LinearStability& stability, const std::vector<double>& speeds,
+                                          int count)
+{
+    std::vector<std::vector<Mode>> loci;
+    for (std::size_t p = 0; p < speeds.size(); ++p)
+    {
+        if (p == 0)
+        {
+            loci.push_back(stability.lowestModes(speeds[0], count));
+            continue;
+        }
+        std::vector<Mode> candidates = stability.lowestModes(speeds[p], stability.dofs() * 2);
+        std::vector<bool> used(candidates.size(), false);
+        std::vector<Mode> next;
+        for (const Mode& previous : loci.back())
+        {
+            std::size_t best = candidates.size();
+            for (std::size_t c = 0; c < candidates.size(); ++c)
+                if (!used[c] && (best == candidates.size() || std::abs(candidates[c].lambda - previous.lambda) <
+                                                                  std::abs(candidates[best].lambda - previous.lambda)))
+                    best = c;
+            if (best == candidates.size())
+                break;
+            used[best] = true;
+            next.push_back(candidates[best]);
+        }
+        loci.push_back(next);
+    }
+    return loci;
+}
+
 std::array<std::complex<double>, 2> dispersionOmega(double k, double u, double beta)
 {
     const std::complex<double> root = std::sqrt(std::complex<double>(k * k - (1.0 - beta) * u * u, 0.0));

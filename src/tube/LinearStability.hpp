@@ -24,7 +24,7 @@ namespace unilag::tube
 struct Mode
 {
     std::complex<double> lambda; //!< eta ~ exp(lambda tau)
-    std::complex<double> omega() const { return {lambda.imag(), -lambda.real()}; } //!< -i lambda
+    std::complex<double> omega() const { return {lambda.imag(), 0.0 - lambda.real()}; } //!< -i lambda (no -0)
     double growth() const { return lambda.real(); }
     double frequency() const { return lambda.imag(); }
 };
@@ -88,6 +88,12 @@ class LinearStability
     lapack::Matrix mass_, bending_, flow_, coriolis_;        //!< reduced M, K_b, K_f, G
     lapack::Matrix invMassBending_, invMassFlow_, invMassCoriolis_; //!< M^{-1} times each
 };
+
+/*! The `count` lowest modes at speeds[0] followed along the speeds: at each speed, each mode goes to the nearest
+ *  unused eigenvalue of non-negative frequency (greedy), so that a locus stays one mode when modes cross in
+ *  frequency or one becomes overdamped. Result[p][m]: mode m at speeds[p]. */
+std::vector<std::vector<Mode>> trackModes(const LinearStability& stability, const std::vector<double>& speeds,
+                                          int count);
 
 //! u_cf of the scene's tube at mass ratio beta (the first instability, flutter or divergence).
 Onset criticalFlutterSpeed(const TubeDiscretisation& disc, double beta, const ScanOptions& scan);
