@@ -3,7 +3,7 @@
 the lowest modes, Im(omega) against Re(omega) as u grows from 0 (dot) to 1.25 u_cf, from stability.csv and
 stability_loci.csv in the folder given.
 
-Convention (docs/tube-model.md 3): eta ~ exp(i omega tau); a mode is unstable where Im(omega) < 0.
+Convention (docs/tube-model.md 4): eta ~ exp(i omega tau); a mode is unstable where Im(omega) < 0.
 Usage: tube_stability_plot.py OUTPUT_DIR
 """
 import csv

@@ -79,12 +79,12 @@ std::vector<std::complex<double>> generalizedEigenvalues(const Matrix& a, const 
     std::vector<double> ar(n), ai(n), be(n);
     double dummy = 0.0, query = 0.0;
     int lwork = -1, info = 0;
-    dggev_("N", "N", &n, wa.a.data(), &n, wb.a.data(), &n, ar.data(), ai.data(), be.data(), &dummy, &one, &dummy,
-           &one, &query, &lwork, &info);
+    dggev_("N", "N", &n, wa.a.data(), &n, wb.a.data(), &n, ar.data(), ai.data(), be.data(), &dummy, &one, &dummy, &one,
+           &query, &lwork, &info);
     lwork = int(query);
     std::vector<double> scratch(std::max(1, lwork));
-    dggev_("N", "N", &n, wa.a.data(), &n, wb.a.data(), &n, ar.data(), ai.data(), be.data(), &dummy, &one, &dummy,
-           &one, scratch.data(), &lwork, &info);
+    dggev_("N", "N", &n, wa.a.data(), &n, wb.a.data(), &n, ar.data(), ai.data(), be.data(), &dummy, &one, &dummy, &one,
+           scratch.data(), &lwork, &info);
     if (info != 0)
         throw std::runtime_error("dggev did not converge (info " + std::to_string(info) + ")");
     // beta ~ 0 relative to alpha is an infinite eigenvalue (a direction B does not see)

@@ -88,9 +88,10 @@ bool byFrequency(const Mode& a, const Mode& b)
 //! The mode with the largest growth relative to its size (the one that crosses first).
 Mode leadingMode(const std::vector<Mode>& modes)
 {
-    return *std::max_element(modes.begin(), modes.end(), [](const Mode& a, const Mode& b) {
-        return a.growth() / (1.0 + std::abs(a.lambda)) < b.growth() / (1.0 + std::abs(b.lambda));
-    });
+    return *std::max_element(
+        modes.begin(), modes.end(),
+        [](const Mode& a, const Mode& b)
+        { return a.growth() / (1.0 + std::abs(a.lambda)) < b.growth() / (1.0 + std::abs(b.lambda)); });
 }
 
 } // namespace
@@ -118,7 +119,8 @@ void LinearStability::projectOnModes(int modes)
     std::vector<double> values, phi;
     lapack::symmetricEigenpairs(bending_, mass_, modes, values, phi);
     const int n = mass_.n;
-    auto project = [&](const Matrix& a) {
+    auto project = [&](const Matrix& a)
+    {
         Matrix r(modes);
         std::vector<double> aPhi(std::size_t(n) * modes, 0.0);
         for (int k = 0; k < modes; ++k)

@@ -23,7 +23,7 @@ namespace unilag::tube
 //! One eigenvalue of the linearised tube.
 struct Mode
 {
-    std::complex<double> lambda; //!< eta ~ exp(lambda tau)
+    std::complex<double> lambda;                                                        //!< eta ~ exp(lambda tau)
     std::complex<double> omega() const { return {lambda.imag(), 0.0 - lambda.real()}; } //!< -i lambda (no -0)
     double growth() const { return lambda.real(); }
     double frequency() const { return lambda.imag(); }
@@ -32,10 +32,10 @@ struct Mode
 //! The first instability met as u grows from 0.
 struct Onset
 {
-    bool found = false;        //!< false: stable up to the scan's end
-    double speed = std::numeric_limits<double>::infinity(); //!< u at onset
+    bool found = false;                                          //!< false: stable up to the scan's end
+    double speed = std::numeric_limits<double>::infinity();      //!< u at onset
     double frequency = std::numeric_limits<double>::quiet_NaN(); //!< Re(omega) of the mode going unstable there
-    bool divergence = false;   //!< the mode goes through 0 on the real axis (static buckling), not a Hopf pair
+    bool divergence = false; //!< the mode goes through 0 on the real axis (static buckling), not a Hopf pair
 };
 
 /*! The tube's discretisation: `elements` finite elements, then (modes > 0) a Galerkin projection on the
@@ -85,7 +85,7 @@ class LinearStability
     void projectOnModes(int modes);
 
     double beta_;
-    lapack::Matrix mass_, bending_, flow_, coriolis_;        //!< reduced M, K_b, K_f, G
+    lapack::Matrix mass_, bending_, flow_, coriolis_;               //!< reduced M, K_b, K_f, G
     lapack::Matrix invMassBending_, invMassFlow_, invMassCoriolis_; //!< M^{-1} times each
 };
 

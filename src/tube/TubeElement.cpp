@@ -82,7 +82,7 @@ std::vector<int> HermiteBeamElement::constrained(EndCondition end) const
 std::unique_ptr<TubeElement> makeElement(TubeModel model)
 {
     if (model != TubeModel::EulerBernoulli)
-        throw std::logic_error("only the Euler-Bernoulli element exists (docs/tube-model.md 5)");
+        throw std::logic_error("only the Euler-Bernoulli element exists (docs/tube-model.md 7)");
     return std::make_unique<HermiteBeamElement>();
 }
 

@@ -57,7 +57,7 @@ class HermiteBeamElement : public TubeElement
     std::vector<int> constrained(EndCondition end) const override;
 };
 
-//! The element of a model (only Euler-Bernoulli so far; the geometric model's element is docs/tube-model.md 5).
+//! The element of a model (only Euler-Bernoulli so far; the geometric model's element is docs/tube-model.md 7).
 std::unique_ptr<TubeElement> makeElement(TubeModel model);
 
 } // namespace unilag::tube

@@ -49,8 +49,8 @@ constexpr int kRowWidth = 5;
  *  (each rank fills only its own rows; the others stay 0). */
 struct StudyTables
 {
-    std::vector<double> rows;  //!< nBeta x kRowWidth
-    std::vector<double> loci;  //!< nBeta x points x (1 + 2 modes): u, then Re omega, Im omega of each mode
+    std::vector<double> rows; //!< nBeta x kRowWidth
+    std::vector<double> loci; //!< nBeta x points x (1 + 2 modes): u, then Re omega, Im omega of each mode
     int points = 0, modes = 0;
     int lociWidth() const { return 1 + 2 * modes; }
 };
@@ -139,8 +139,8 @@ void writeStabilityCsv(const TubeScene& scene, const StudyTables& t, const std::
     for (std::size_t i = 0; i < scene.stability.beta.size(); ++i)
     {
         const double* r = &t.rows[i * kRowWidth];
-        out << csvNumber(r[0]) << ',' << csvNumber(r[1]) << ',' << csvNumber(r[2]) << ',' << kindName(int(r[3]))
-            << ',' << csvNumber(r[4]);
+        out << csvNumber(r[0]) << ',' << csvNumber(r[1]) << ',' << csvNumber(r[2]) << ',' << kindName(int(r[3])) << ','
+            << csvNumber(r[4]);
         if (scene.hasPhysical)
             out << ',' << csvNumber(r[1] * p.velocityScale()) << ',' << csvNumber(r[2] / (2 * kPi * p.timeScale()));
         out << "\n";

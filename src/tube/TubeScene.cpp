@@ -50,11 +50,12 @@ void readRadii(ConfigNode& t, PhysicalTube& p)
 void readTube(ConfigNode& root, TubeScene& s)
 {
     ConfigNode t = root.sub("tube");
-    s.model = t.option<TubeModel>("model", "euler_bernoulli",
-                                  {{"euler_bernoulli", TubeModel::EulerBernoulli}, {"geometric", TubeModel::Geometric}});
+    s.model =
+        t.option<TubeModel>("model", "euler_bernoulli",
+                            {{"euler_bernoulli", TubeModel::EulerBernoulli}, {"geometric", TubeModel::Geometric}});
     if (s.model == TubeModel::Geometric)
         t.fail("model", "'geometric' (shear, extension, area change) is not implemented yet; use 'euler_bernoulli' "
-                        "(docs/tube-model.md 5)");
+                        "(docs/tube-model.md 7)");
     PhysicalTube& p = s.physical;
     p.length = positiveIfGiven(t, "length");
     readRadii(t, p);
@@ -72,10 +73,10 @@ void readTube(ConfigNode& root, TubeScene& s)
     f.rejectUnknown();
 
     const std::vector<std::pair<std::string, double>> required = {{"length", p.length},
-                                                                   {"outer_radius", p.outerRadius},
-                                                                   {"inner_radius", p.innerRadius},
-                                                                   {"youngs_modulus", p.youngsModulus},
-                                                                   {"density", p.wallDensity}};
+                                                                  {"outer_radius", p.outerRadius},
+                                                                  {"inner_radius", p.innerRadius},
+                                                                  {"youngs_modulus", p.youngsModulus},
+                                                                  {"density", p.wallDensity}};
     bool anyGiven = !std::isnan(p.fluidDensity);
     for (const auto& [key, v] : required)
         anyGiven = anyGiven || !std::isnan(v);

@@ -41,7 +41,7 @@ struct PhysicalTube
     double youngsModulus = 0.0, poissonRatio = 0.3, wallDensity = 0.0, shearCoefficient = 0.5;
     double fluidDensity = 0.0;
 
-    double bendingStiffness() const;  //!< EI
+    double bendingStiffness() const;   //!< EI
     double fluidMassPerLength() const; //!< M = rho_f pi Ri^2
     double wallMassPerLength() const;  //!< m = rho_w pi (Ro^2 - Ri^2)
     double massRatio() const;          //!< beta = M / (M + m)
@@ -52,14 +52,14 @@ struct PhysicalTube
 //! The linear stability study (dimensionless, tube.md 2.1).
 struct StabilityStudy
 {
-    std::vector<double> beta;  //!< mass ratios, each in [0, 1)
-    int elements = 40;         //!< finite elements along the tube
-    int modes = 16;            //!< Galerkin on the lowest modes without flow (0: every element dof)
-    double speedMax = 30.0;    //!< the scan for the first instability stops here (u)
-    double speedStep = 0.02;   //!< scan step in u (an unstable window narrower than this can be missed)
-    double tolerance = 1e-6;   //!< bisection width in u
-    int locusModes = 4;        //!< modes in the Argand loci
-    int locusPoints = 101;     //!< flow speeds in the loci, from 0 to locusSpeedFactor u_cf
+    std::vector<double> beta; //!< mass ratios, each in [0, 1)
+    int elements = 40;        //!< finite elements along the tube
+    int modes = 16;           //!< Galerkin on the lowest modes without flow (0: every element dof)
+    double speedMax = 30.0;   //!< the scan for the first instability stops here (u)
+    double speedStep = 0.02;  //!< scan step in u (an unstable window narrower than this can be missed)
+    double tolerance = 1e-6;  //!< bisection width in u
+    int locusModes = 4;       //!< modes in the Argand loci
+    int locusPoints = 101;    //!< flow speeds in the loci, from 0 to locusSpeedFactor u_cf
     double locusSpeedFactor = 1.25;
 };
 
@@ -72,7 +72,7 @@ struct TubeScene
     EndCondition left = EndCondition::Clamped, right = EndCondition::Free; //!< flow enters at the left end
     StabilityStudy stability;
     std::string outputDirectory;
-    bool plot = true;                              //!< write stability.png (apps/tube_stability_plot.py)
+    bool plot = true;                                 //!< write stability.png (apps/tube_stability_plot.py)
     std::shared_ptr<Teuchos::ParameterList> resolved; //!< the scene after --set, for scene.yaml
 };
 

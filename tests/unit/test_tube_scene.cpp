@@ -112,8 +112,9 @@ TEST(TubeScene, BadInputNamesFileAndKey)
         {phys, "fluid.densty=1.0", "key 'fluid.densty': unknown key (did you mean 'fluid.density'?)"},
         {kScene, "stability.beta=[0.2,1.0]", "key 'stability.beta': mass ratio must be in [0, 1), found 1"},
         {kScene, "stability.beta=[-0.1]", "key 'stability.beta': mass ratio must be in [0, 1)"},
-        {kScene, "ends.left=clampd", "key 'ends.left': 'clampd' is not one of: clamped, pinned, free (did you mean "
-                                     "'clamped'?)"},
+        {kScene, "ends.left=clampd",
+         "key 'ends.left': 'clampd' is not one of: clamped, pinned, free (did you mean "
+         "'clamped'?)"},
         {kScene, "tube.length=-1.0", "key 'tube.length': must be a positive number"},
         {kScene, "tube.model=timoshenko", "key 'tube.model': 'timoshenko' is not one of"},
         {kScene, "stability.elements=1", "key 'stability.elements': must be in [2, 1000]"},

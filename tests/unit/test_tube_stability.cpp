@@ -108,7 +108,8 @@ TEST(TubeStability, CriticalSpeedJumpsNearPaidoussisValues)
     {
         double lo, hi, expected, speedMax;
     };
-    for (const Window w : {Window{0.28, 0.31, 0.30, 9.0}, Window{0.68, 0.71, 0.69, 13.5}, Window{0.91, 0.94, 0.92, 18.5}})
+    for (const Window w :
+         {Window{0.28, 0.31, 0.30, 9.0}, Window{0.68, 0.71, 0.69, 13.5}, Window{0.91, 0.94, 0.92, 18.5}})
     {
         double jump = 0.0;
         const double at = locateJump(d, w.lo, w.hi, w.speedMax, jump);
@@ -139,8 +140,8 @@ TEST(TubeStability, DivergenceOfSupportedTubes)
             EXPECT_NEAR(o.speed, c.expected, 1e-3 * c.expected);
         }
     // a clamped-pinned tube buckles at 4.493 (tube.md 2.1); a cantilever never diverges
-    EXPECT_NEAR(LinearStability(supported(EndCondition::Clamped, EndCondition::Pinned), 0.3).divergenceSpeed(),
-                4.4934, 1e-3);
+    EXPECT_NEAR(LinearStability(supported(EndCondition::Clamped, EndCondition::Pinned), 0.3).divergenceSpeed(), 4.4934,
+                1e-3);
     EXPECT_TRUE(std::isinf(LinearStability(cantilever(40, 16), 0.3).divergenceSpeed()));
 }
 
