@@ -23,6 +23,9 @@ else()
 endif()
 add_library(unilag::kokkos ALIAS unilag_kokkos)
 
+# LAPACK (Debian liblapack-dev) for the tube's dense eigenproblems, called through extern "C" (src/tube/Lapack.cpp).
+find_package(LAPACK REQUIRED)
+
 set(HDF5_PREFER_PARALLEL ON)
 find_package(HDF5 REQUIRED COMPONENTS C)
 if(NOT HDF5_IS_PARALLEL)

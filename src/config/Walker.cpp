@@ -296,8 +296,8 @@ std::string ConfigNode::choice(const std::string& key, const std::string& def, c
     return v;
 }
 
-//! A list of 1 to 3 numbers.
-std::vector<double> ConfigNode::vector(const std::string& key, bool required)
+//! A list of numbers of any length (a single number is a list of one).
+std::vector<double> ConfigNode::numbers(const std::string& key, bool required)
 {
     used_.insert(key);
     if (!list_.isParameter(key))
@@ -322,9 +322,26 @@ std::vector<double> ConfigNode::vector(const std::string& key, bool required)
                 fail(key, "'" + s + "' is not a number");
             v.push_back(d);
         }
+    else if (e.isType<double>() || e.isType<int>())
+        v.push_back(number(key, 0.0));
     else
         fail(key, "expected a list of numbers like [0.0, 0.0], found " + entryText(e));
-    if (v.empty() || v.size() > 3)
+    if (v.empty())
+        fail(key, "expected at least one number, found an empty list");
+    return v;
+}
+
+//! A list of 1 to 3 numbers.
+std::vector<double> ConfigNode::vector(const std::string& key, bool required)
+{
+    if (has(key))
+    {
+        const auto& e = list_.getEntry(key);
+        if (e.isType<double>() || e.isType<int>())
+            fail(key, "expected a list of numbers like [0.0, 0.0], found " + entryText(e));
+    }
+    std::vector<double> v = numbers(key, required);
+    if (has(key) && v.size() > 3)
         fail(key, "expected 1 to 3 numbers, found " + std::to_string(v.size()));
     return v;
 }

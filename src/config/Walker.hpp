@@ -66,6 +66,8 @@ class ConfigNode
         const std::string v = choice(key, def, allowed, required);
         return std::find_if(names.begin(), names.end(), [&](const auto& n) { return n.first == v; })->second;
     }
+    //! A list of numbers of any length; a single number is a list of one (`--set key=0.3`).
+    std::vector<double> numbers(const std::string& key, bool required = false);
     //! A list of 1 to 3 numbers.
     std::vector<double> vector(const std::string& key, bool required = false);
     //! A list of 1 to 3 constants or expressions of x, y, z, r.

@@ -1,0 +1,210 @@
+#include "tube/TubeScene.hpp"
+
+#include <cmath>
+#include <filesystem>
+
+#include <Teuchos_YamlParameterListHelpers.hpp>
+
+#include "config/Walker.hpp"
+
+namespace unilag::tube
+{
+namespace
+{
+
+namespace fs = std::filesystem;
+using config::ConfigNode;
+using config::num;
+
+constexpr double kPi = 3.14159265358979323846;
+
+//! A positive number if the key is given, NaN if not (so that the caller can tell which keys are missing).
+double positiveIfGiven(ConfigNode& node, const std::string& key)
+{
+    return node.has(key) ? node.positive(key, 0.0, true) : std::nan("");
+}
+
+//! The tube's radii: outer_radius with inner_radius or wall_thickness (not both), inner < outer.
+void readRadii(ConfigNode& t, PhysicalTube& p)
+{
+    p.outerRadius = positiveIfGiven(t, "outer_radius");
+    if (t.has("inner_radius") && t.has("wall_thickness"))
+        t.fail("wall_thickness", "give inner_radius or wall_thickness, not both");
+    if (t.has("wall_thickness"))
+    {
+        const double h = t.positive("wall_thickness", 0.0, true);
+        if (h >= p.outerRadius)
+            t.fail("wall_thickness", "must be less than outer_radius (" + num(p.outerRadius) + "), found " + num(h));
+        p.innerRadius = p.outerRadius - h;
+    }
+    else
+    {
+        p.innerRadius = positiveIfGiven(t, "inner_radius");
+        if (p.innerRadius >= p.outerRadius)
+            t.fail("inner_radius",
+                   "must be less than outer_radius (" + num(p.outerRadius) + "), found " + num(p.innerRadius));
+    }
+}
+
+//! tube: the model and, optionally, the physical tube (then every physical key is required).
+void readTube(ConfigNode& root, TubeScene& s)
+{
+    ConfigNode t = root.sub("tube");
+    s.model =
+        t.option<TubeModel>("model", "euler_bernoulli",
+                            {{"euler_bernoulli", TubeModel::EulerBernoulli}, {"geometric", TubeModel::Geometric}});
+    if (s.model == TubeModel::Geometric)
+        t.fail("model", "'geometric' (shear, extension, area change) is not implemented yet; use 'euler_bernoulli' "
+                        "(docs/tube-model.md 7)");
+    PhysicalTube& p = s.physical;
+    p.length = positiveIfGiven(t, "length");
+    readRadii(t, p);
+    p.youngsModulus = positiveIfGiven(t, "youngs_modulus");
+    p.wallDensity = positiveIfGiven(t, "density");
+    p.poissonRatio = t.number("poisson_ratio", 0.3);
+    if (!(p.poissonRatio > -1.0 && p.poissonRatio <= 0.5))
+        t.fail("poisson_ratio", "must be in (-1, 0.5], found " + num(p.poissonRatio));
+    p.shearCoefficient = t.number("shear_coefficient", 0.5);
+    if (!(p.shearCoefficient > 0.0 && p.shearCoefficient <= 1.0))
+        t.fail("shear_coefficient", "must be in (0, 1], found " + num(p.shearCoefficient));
+
+    ConfigNode f = root.sub("fluid");
+    p.fluidDensity = positiveIfGiven(f, "density");
+    f.rejectUnknown();
+
+    const std::vector<std::pair<std::string, double>> required = {{"length", p.length},
+                                                                  {"outer_radius", p.outerRadius},
+                                                                  {"inner_radius", p.innerRadius},
+                                                                  {"youngs_modulus", p.youngsModulus},
+                                                                  {"density", p.wallDensity}};
+    bool anyGiven = !std::isnan(p.fluidDensity);
+    for (const auto& [key, v] : required)
+        anyGiven = anyGiven || !std::isnan(v);
+    s.hasPhysical = anyGiven;
+    if (anyGiven)
+    {
+        for (const auto& [key, v] : required)
+            if (std::isnan(v))
+                t.missing(key, "(a physical tube needs length, outer_radius, inner_radius or wall_thickness, "
+                               "youngs_modulus, density and fluid.density)");
+        if (std::isnan(p.fluidDensity))
+            f.missing("density", "(a physical tube needs the fluid's density)");
+    }
+    t.rejectUnknown();
+}
+
+//! ends: left (where the fluid enters) and right, each clamped, pinned or free.
+void readEnds(ConfigNode& root, TubeScene& s)
+{
+    ConfigNode e = root.sub("ends");
+    const std::vector<std::pair<std::string, EndCondition>> names = {
+        {"clamped", EndCondition::Clamped}, {"pinned", EndCondition::Pinned}, {"free", EndCondition::Free}};
+    s.left = e.option("left", "clamped", names);
+    s.right = e.option("right", "free", names);
+    if (s.left == EndCondition::Free && s.right == EndCondition::Free)
+        e.fail("right", "a tube free at both ends has rigid-body modes; hold at least one end");
+    if (s.left != EndCondition::Clamped && s.right != EndCondition::Clamped &&
+        (s.left == EndCondition::Free || s.right == EndCondition::Free))
+        e.fail("right", "a pinned-free tube has a rigid-body mode; clamp one end");
+    e.rejectUnknown();
+}
+
+//! stability: the mass ratios and the numerical parameters of the study.
+void readStability(ConfigNode& root, TubeScene& s)
+{
+    ConfigNode st = root.sub("stability");
+    StabilityStudy& study = s.stability;
+    if (st.has("beta") || !s.hasPhysical)
+        study.beta = st.numbers("beta", true);
+    else
+        study.beta = {s.physical.massRatio()};
+    for (double b : study.beta)
+        if (!(b >= 0.0 && b < 1.0))
+            st.fail("beta", "mass ratio must be in [0, 1), found " + num(b));
+    study.elements = int(st.integer("elements", study.elements, 2, 1000));
+    study.modes = int(st.integer("modes", study.modes, 0, 10000));
+    study.speedMax = st.positive("speed_max", study.speedMax);
+    study.speedStep = st.positive("speed_step", study.speedStep);
+    if (study.speedStep >= study.speedMax)
+        st.fail("speed_step", "must be less than speed_max (" + num(study.speedMax) + ")");
+    study.tolerance = st.positive("tolerance", study.tolerance);
+    study.locusModes = int(st.integer("locus_modes", study.locusModes, 1, 50));
+    study.locusPoints = int(st.integer("locus_points", study.locusPoints, 2, 100000));
+    study.locusSpeedFactor = st.positive("locus_speed_factor", study.locusSpeedFactor);
+    st.rejectUnknown();
+}
+
+void readOutput(ConfigNode& root, TubeScene& s)
+{
+    ConfigNode o = root.sub("output");
+    s.outputDirectory = o.text("directory", "output/" + s.name);
+    if (s.outputDirectory.empty())
+        o.fail("directory", "must not be empty");
+    s.plot = o.boolean("plot", true);
+    o.rejectUnknown();
+}
+
+} // namespace
+
+const char* endName(EndCondition e)
+{
+    switch (e)
+    {
+    case EndCondition::Clamped:
+        return "clamped";
+    case EndCondition::Pinned:
+        return "pinned";
+    case EndCondition::Free:
+        return "free";
+    }
+    return "?";
+}
+
+double PhysicalTube::bendingStiffness() const
+{
+    return youngsModulus * kPi * (std::pow(outerRadius, 4) - std::pow(innerRadius, 4)) / 4.0;
+}
+double PhysicalTube::fluidMassPerLength() const
+{
+    return fluidDensity * kPi * innerRadius * innerRadius;
+}
+double PhysicalTube::wallMassPerLength() const
+{
+    return wallDensity * kPi * (outerRadius * outerRadius - innerRadius * innerRadius);
+}
+double PhysicalTube::massRatio() const
+{
+    return fluidMassPerLength() / (fluidMassPerLength() + wallMassPerLength());
+}
+double PhysicalTube::velocityScale() const
+{
+    return std::sqrt(bendingStiffness() / fluidMassPerLength()) / length;
+}
+double PhysicalTube::timeScale() const
+{
+    return length * length * std::sqrt((fluidMassPerLength() + wallMassPerLength()) / bendingStiffness());
+}
+
+TubeScene readTubeScene(const std::string& file, const std::vector<std::string>& overrides)
+{
+    const Teuchos::RCP<Teuchos::ParameterList> top = config::readYaml(file, "unilag", overrides);
+    TubeScene s;
+    s.file = file;
+    s.name = fs::path(file).stem().string();
+    ConfigNode root(file, "", *top);
+    s.name = root.text("title", s.name);
+    readTube(root, s);
+    readEnds(root, s);
+    readStability(root, s);
+    readOutput(root, s);
+    root.rejectUnknown();
+    s.resolved = std::make_shared<Teuchos::ParameterList>(*top);
+    return s;
+}
+
+void writeTubeScene(const TubeScene& scene, const std::string& file)
+{
+    Teuchos::writeParameterListToYamlFile(*scene.resolved, file);
+}
+
+} // namespace unilag::tube

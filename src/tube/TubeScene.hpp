@@ -1,0 +1,85 @@
+/*! \file TubeScene.hpp
+ *  \brief A tube scene: the tube, its fluid, its end conditions, the stability study and the output, read and
+ *  validated by the shared scene walker (config::ConfigNode). Bad input throws InputError naming file and key.
+ *
+ *  The Euler-Bernoulli study is dimensionless (tube.md 2.1): it takes the mass ratios beta directly from
+ *  `stability.beta`. The physical tube (`tube:` and `fluid:` keys) is optional; when given, it supplies the
+ *  scales (EI, M, m, beta) reported in summary.json, and its own beta when `stability.beta` is absent.
+ */
+#pragma once
+
+#include <memory>
+#include <string>
+#include <vector>
+
+namespace Teuchos
+{
+class ParameterList;
+}
+
+namespace unilag::tube
+{
+
+enum class EndCondition
+{
+    Clamped,
+    Pinned,
+    Free
+};
+enum class TubeModel
+{
+    EulerBernoulli, //!< inextensible, unshearable, no area change: the classical pipe (tube.md 2.1)
+    Geometric       //!< finite shear and extension, area change K (tube.md 1.3): not implemented yet
+};
+
+const char* endName(EndCondition e);
+
+//! The physical tube and fluid (SI units), when the scene gives them.
+struct PhysicalTube
+{
+    double length = 1.0, outerRadius = 0.0, innerRadius = 0.0;
+    double youngsModulus = 0.0, poissonRatio = 0.3, wallDensity = 0.0, shearCoefficient = 0.5;
+    double fluidDensity = 0.0;
+
+    double bendingStiffness() const;   //!< EI
+    double fluidMassPerLength() const; //!< M = rho_f pi Ri^2
+    double wallMassPerLength() const;  //!< m = rho_w pi (Ro^2 - Ri^2)
+    double massRatio() const;          //!< beta = M / (M + m)
+    double velocityScale() const;      //!< U = u sqrt(EI / M) / L
+    double timeScale() const;          //!< t = tau L^2 sqrt((M + m) / EI)
+};
+
+//! The linear stability study (dimensionless, tube.md 2.1).
+struct StabilityStudy
+{
+    std::vector<double> beta; //!< mass ratios, each in [0, 1)
+    int elements = 40;        //!< finite elements along the tube
+    int modes = 16;           //!< Galerkin on the lowest modes without flow (0: every element dof)
+    double speedMax = 30.0;   //!< the scan for the first instability stops here (u)
+    double speedStep = 0.02;  //!< scan step in u (an unstable window narrower than this can be missed)
+    double tolerance = 1e-6;  //!< bisection width in u
+    int locusModes = 4;       //!< modes in the Argand loci
+    int locusPoints = 101;    //!< flow speeds in the loci, from 0 to locusSpeedFactor u_cf
+    double locusSpeedFactor = 1.25;
+};
+
+struct TubeScene
+{
+    std::string file, name;
+    TubeModel model = TubeModel::EulerBernoulli;
+    bool hasPhysical = false; //!< the scene gave the physical tube
+    PhysicalTube physical;
+    EndCondition left = EndCondition::Clamped, right = EndCondition::Free; //!< flow enters at the left end
+    StabilityStudy stability;
+    std::string outputDirectory;
+    bool plot = true;                                 //!< write stability.png (apps/tube_stability_plot.py)
+    std::shared_ptr<Teuchos::ParameterList> resolved; //!< the scene after --set, for scene.yaml
+};
+
+//! Read and validate a tube scene (top-level key `unilag:`), applying `--set` overrides. Throws InputError.
+TubeScene readTubeScene(const std::string& file, const std::vector<std::string>& overrides);
+
+//! Write the resolved scene as YAML.
+void writeTubeScene(const TubeScene& scene, const std::string& file);
+
+} // namespace unilag::tube
