@@ -12,15 +12,19 @@
 
 #include "config/Scene.hpp"
 #include "solver/Run.hpp"
+#include "tube/TubeRun.hpp"
+#include "tube/TubeScene.hpp"
 #include "unilag/Types.hpp"
 
 namespace
 {
 
-const char* usage = R"(unilag: unified Lagrangian continuum mechanics (GPR model), cell-centred finite volumes.
+const char* usage = R"(unilag: unified Lagrangian continuum mechanics (GPR model), cell-centred finite volumes, and
+tubes conveying fluid.
 
 usage:
-  unilag run SCENE.yaml [options]     run a scene (works under mpirun -np N)
+  unilag run SCENE.yaml [options]     run a scene (works under mpirun -np N): a continuum scene, or a tube scene
+                                      (one with a `tube:` section; today its linear stability study)
   unilag --help                       this text
 
 options:
@@ -113,6 +117,22 @@ Args parse(int argc, char** argv)
     return a;
 }
 
+//! A continuum (GPR) scene: read, validated, run. Throws InputError.
+int runContinuum(const Args& args, const Teuchos::RCP<const Teuchos::Comm<int>>& comm)
+{
+    unilag::Scene scene = unilag::readScene(args.scene, args.sets);
+    if (!args.output.empty())
+    {
+        scene.outputDirectory = args.output;
+        scene.outputSource = "--output";
+    }
+    unilag::RunOptions options;
+    options.check = args.check;
+    options.progress = !args.quiet;
+    options.threads = unilag::ExecSpace::concurrency();
+    return unilag::runScene(scene, options, comm);
+}
+
 } // namespace
 
 int main(int argc, char** argv)
@@ -143,17 +163,10 @@ int main(int argc, char** argv)
         auto comm = Tpetra::getDefaultComm();
         try
         {
-            unilag::Scene scene = unilag::readScene(args.scene, args.sets);
-            if (!args.output.empty())
-            {
-                scene.outputDirectory = args.output;
-                scene.outputSource = "--output";
-            }
-            unilag::RunOptions options;
-            options.check = args.check;
-            options.progress = !args.quiet;
-            options.threads = unilag::ExecSpace::concurrency();
-            code = unilag::runScene(scene, options, comm);
+            if (unilag::tube::isTubeScene(args.scene))
+                code = unilag::runTube(args.scene, args.sets, args.output, args.check, MPI_COMM_WORLD);
+            else
+                code = runContinuum(args, comm);
         }
         catch (const unilag::InputError& e)
         {

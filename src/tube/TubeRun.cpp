@@ -8,6 +8,7 @@
 #include <fstream>
 #include <iomanip>
 #include <sstream>
+#include <vector>
 
 #include "core/Errors.hpp"
 #include "core/Format.hpp"
@@ -121,6 +122,38 @@ StudyTables runStudy(const TubeScene& scene, MPI_Comm comm)
     return t;
 }
 
+/*! --check: each beta's onset again on a twice finer discretisation (elements x2, modes x1.5) must agree within
+ *  1e-3 relative (the study is converged in the discretisation), and the onset kind must be the same. The failures,
+ *  gathered on rank 0 (each rank checks its own betas). Collective. */
+std::vector<std::string> convergenceCheck(const TubeScene& scene, const StudyTables& t, MPI_Comm comm)
+{
+    const StabilityStudy& st = scene.stability;
+    const int nBeta = int(st.beta.size()), rank = mpi::rank(comm), size = mpi::size(comm);
+    TubeDiscretisation fine = discretisation(scene);
+    fine.elements *= 2;
+    fine.modes = fine.modes > 0 ? fine.modes + fine.modes / 2 : 0;
+    std::vector<double> fineSpeed(nBeta, 0.0);
+    for (int i = rank; i < nBeta; i += size)
+    {
+        const Onset onset = LinearStability(fine, st.beta[i]).firstInstability({st.speedMax, st.speedStep, st.tolerance});
+        fineSpeed[i] = onset.found ? onset.speed : -1.0;
+    }
+    MPI_Reduce(rank == 0 ? MPI_IN_PLACE : fineSpeed.data(), fineSpeed.data(), nBeta, MPI_DOUBLE, MPI_SUM, 0, comm);
+    std::vector<std::string> fails;
+    for (int i = 0; rank == 0 && i < nBeta; ++i)
+    {
+        const double coarse = t.rows[std::size_t(i) * kRowWidth + 1], finer = fineSpeed[i];
+        const bool foundCoarse = coarse == coarse, foundFine = finer >= 0.0;
+        const double change = foundCoarse && foundFine ? std::abs(finer - coarse) / coarse : 0.0;
+        if (foundCoarse != foundFine || change > 1e-3)
+            fails.push_back("beta = " + jsonNumber(st.beta[i]) + ": onset u = " + jsonNumber(coarse) + " with " +
+                            std::to_string(st.elements) + " elements but " + jsonNumber(finer) + " with " +
+                            std::to_string(fine.elements) + " (relative change " + jsonNumber(change) +
+                            " > 1e-3): refine stability.elements / stability.modes");
+    }
+    return fails;
+}
+
 std::string csvNumber(double v)
 {
     std::ostringstream os;
@@ -232,7 +265,7 @@ std::string writeOutput(const TubeScene& scene, const StudyTables& t, int ranks,
 } // namespace
 
 int runTube(const std::string& scenePath, const std::vector<std::string>& overrides, const std::string& outputDir,
-            MPI_Comm comm)
+            bool check, MPI_Comm comm)
 {
     const auto start = std::chrono::steady_clock::now();
     const int rank = mpi::rank(comm);
@@ -266,7 +299,18 @@ int runTube(const std::string& scenePath, const std::vector<std::string>& overri
             std::fprintf(stderr, "unilag: error: %s\n", error.c_str());
         return ExitInput;
     }
-    return ExitOk;
+    if (rank == 0)
+        std::printf("unilag: %s: tube linear stability at %zu mass ratio(s) on %d rank(s) in %.3g s; output in %s\n",
+                    scene.name.c_str(), scene.stability.beta.size(), mpi::size(comm), wall,
+                    scene.outputDirectory.c_str());
+    if (!check)
+        return ExitOk;
+    const std::vector<std::string> fails = convergenceCheck(scene, tables, comm);
+    for (const auto& f : fails)
+        std::fprintf(stderr, "unilag: check failed: %s\n", f.c_str());
+    if (rank == 0 && fails.empty())
+        std::printf("unilag: check passed\n");
+    return fails.empty() ? ExitOk : ExitCheck;
 }
 
 } // namespace unilag

@@ -17,9 +17,10 @@ namespace unilag
 {
 
 /*! \brief Run the tube scene at scenePath with `--set` overrides; outputDir (if not empty) replaces the scene's
- *  output.directory. Collective over comm. Returns the exit code: 0 ok, 2 bad input (one message on stderr
- *  naming the file and key; nothing written). */
+ *  output.directory. check (--check): every onset speed is converged in the discretisation (a twice finer one
+ *  agrees within 1e-3). Collective over comm. Returns the exit code: 0 ok, 2 bad input (one message on stderr
+ *  naming the file and key; nothing written), 3 a failed check. */
 int runTube(const std::string& scenePath, const std::vector<std::string>& overrides, const std::string& outputDir,
-            MPI_Comm comm);
+            bool check, MPI_Comm comm);
 
 } // namespace unilag

@@ -185,6 +185,18 @@ double PhysicalTube::timeScale() const
     return length * length * std::sqrt((fluidMassPerLength() + wallMassPerLength()) / bendingStiffness());
 }
 
+bool isTubeScene(const std::string& file)
+{
+    try
+    {
+        return config::readYaml(file, "unilag", {})->isSublist("tube");
+    }
+    catch (const InputError&)
+    {
+        return false;
+    }
+}
+
 TubeScene readTubeScene(const std::string& file, const std::vector<std::string>& overrides)
 {
     const Teuchos::RCP<Teuchos::ParameterList> top = config::readYaml(file, "unilag", overrides);

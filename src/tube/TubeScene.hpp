@@ -79,6 +79,10 @@ struct TubeScene
 //! Read and validate a tube scene (top-level key `unilag:`), applying `--set` overrides. Throws InputError.
 TubeScene readTubeScene(const std::string& file, const std::vector<std::string>& overrides);
 
+/*! Whether the scene file is a tube scene (its `unilag:` section has a `tube:` section), for `unilag run` to
+ *  dispatch it; false if the file cannot be read (the continuum reader then reports why). */
+bool isTubeScene(const std::string& file);
+
 //! Write the resolved scene as YAML.
 void writeTubeScene(const TubeScene& scene, const std::string& file);
 

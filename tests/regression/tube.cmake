@@ -1,12 +1,13 @@
-# The tube solver's linear stability (src/tube/) through its driver: u_cf against tube.md 2.1, the same table on 1
-# and 3 ranks, and bad input refused. Costs about 10 s in all (one rank each, the PNG by matplotlib).
-set(UNILAG_TUBE $<TARGET_FILE:unilag_tube>)
+# The tube solver's linear stability (src/tube/) through `unilag run` (a scene with a tube: section): u_cf against
+# tube.md 2.1, the same table on 1 and 3 ranks, --check, and bad input refused. About 10 s in all.
+set(UNILAG_TUBE ${UNILAG} run)
+set(UNILAG_TUBE_SH "${UNILAG} run") # inside bash -c strings
 set(TUBE_SCENE ${INPUTS}/tube_stability.yaml)
 
 # Cantilever, EB limit: u_cf at beta 0, 0.2, 0.5 within 0.5% of 4.478, 5.59, 9.32 (measured 4.477819, 5.591459,
 # 9.322398 at 40 elements, 16 modes), and stability.png written.
 add_test(NAME tube_stability_cli COMMAND bash -c
-         "rm -rf ${WORK}/tube_cli && ${UNILAG_TUBE} ${TUBE_SCENE} --set stability.beta=[0.0,0.2,0.5] \
+         "rm -rf ${WORK}/tube_cli && ${UNILAG_TUBE_SH} ${TUBE_SCENE} --set stability.beta=[0.0,0.2,0.5] \
           --set stability.speed_max=12.0 --output ${WORK}/tube_cli && ${PYTHON} ${SCRIPTS}/tube_stability.py ${WORK}/tube_cli --png")
 set_tests_properties(tube_stability_cli PROPERTIES LABELS "tube;regression" PASS_REGULAR_EXPRESSION "tube_stability: PASS")
 
@@ -16,8 +17,8 @@ set(TUBE_SMALL --set stability.beta=[0.0,0.1,0.2,0.3,0.4] --set stability.speed_
 string(REPLACE ";" " " TUBE_SMALL_ARGS "${TUBE_SMALL}")
 string(REPLACE ";" " " TUBE_MPI_RUN "${MPI_RUN}")
 add_test(NAME tube_stability_np3_agree COMMAND bash -c
-         "rm -rf ${WORK}/tube_np1 ${WORK}/tube_np3 && ${UNILAG_TUBE} ${TUBE_SCENE} ${TUBE_SMALL_ARGS} --output ${WORK}/tube_np1 \
-          && ${TUBE_MPI_RUN} 3 ${UNILAG_TUBE} ${TUBE_SCENE} ${TUBE_SMALL_ARGS} --output ${WORK}/tube_np3 \
+         "rm -rf ${WORK}/tube_np1 ${WORK}/tube_np3 && ${UNILAG_TUBE_SH} ${TUBE_SCENE} ${TUBE_SMALL_ARGS} --output ${WORK}/tube_np1 \
+          && ${TUBE_MPI_RUN} 3 ${UNILAG_TUBE_SH} ${TUBE_SCENE} ${TUBE_SMALL_ARGS} --output ${WORK}/tube_np3 \
           && cmp ${WORK}/tube_np1/stability.csv ${WORK}/tube_np3/stability.csv \
           && cmp ${WORK}/tube_np1/stability_loci.csv ${WORK}/tube_np3/stability_loci.csv && echo tube_agree: PASS")
 set_tests_properties(tube_stability_np3_agree PROPERTIES LABELS "tube;regression;mpi" PROCESSORS 3
@@ -40,3 +41,13 @@ tube_error(radii "tube_stability.yaml: key 'tube.inner_radius': must be less tha
            --set tube.outer_radius=0.005 --set tube.inner_radius=0.007)
 tube_error(unknown_key "tube_stability.yaml: key 'stability.speed_mx': unknown key \\(did you mean 'stability.speed_max'"
            --set stability.speed_mx=3.0)
+
+# --check: every onset converged in the discretisation (twice finer within 1e-3). The shipped scene passes (40
+# elements, 16 modes: u_cf moves by < 1e-5); 6 elements on 4 modes do not (beta = 0.5: u_cf off by several %).
+add_test(NAME tube_check_passes COMMAND ${UNILAG_TUBE} ${TUBE_SCENE} --check --set stability.beta=[0.2,0.5]
+         --set output.plot=false --output ${WORK}/tube_check)
+set_tests_properties(tube_check_passes PROPERTIES LABELS "tube;regression" PASS_REGULAR_EXPRESSION "check passed")
+add_test(NAME tube_check_fails_coarse COMMAND bash ${SCRIPTS}/expect_check_failure.sh ${WORK}/tube_check_coarse
+         "beta = 0.5: onset u = .* with 6 elements but .* with 12" -- ${UNILAG_TUBE} ${TUBE_SCENE} --check
+         --set stability.beta=[0.5] --set stability.elements=6 --set stability.modes=4 --set output.plot=false)
+set_tests_properties(tube_check_fails_coarse PROPERTIES LABELS "tube;regression")

@@ -130,7 +130,7 @@ TEST(TubeRun, BadInputExitsTwoAndWritesNothing)
 {
     const fs::path out = scratch() / "bad";
     fs::remove_all(out);
-    EXPECT_EQ(unilag::runTube(kScene, {"stability.beta=[0.5,1.5]"}, out.string(), MPI_COMM_WORLD), unilag::ExitInput);
+    EXPECT_EQ(unilag::runTube(kScene, {"stability.beta=[0.5,1.5]"}, out.string(), false, MPI_COMM_WORLD), unilag::ExitInput);
     EXPECT_FALSE(fs::exists(out));
 }
 
@@ -138,7 +138,7 @@ TEST(TubeRun, WritesTheStabilityTable)
 {
     const fs::path out = scratch() / "ok";
     fs::remove_all(out);
-    ASSERT_EQ(unilag::runTube(physicalScene(), {}, out.string(), MPI_COMM_WORLD), unilag::ExitOk);
+    ASSERT_EQ(unilag::runTube(physicalScene(), {}, out.string(), false, MPI_COMM_WORLD), unilag::ExitOk);
     std::ifstream csv(out / "stability.csv");
     std::string header, row;
     std::getline(csv, header);
