@@ -71,10 +71,12 @@ add_test(NAME exact_solutions_selftest COMMAND bash -c
 add_test(NAME viscous_shock_becker
          COMMAND ${PYTHON} ${SCRIPTS}/viscous_shock.py ${UNILAG} ${INPUTS}/viscous_shock2d.yaml ${WORK} --max-fine-l1 0.030)
 # Isobaric temperature step: L1(temperature) against the Fourier solution decreases over three meshes (measured
-# 3.31e-4, 1.55e-4, 6.46e-5) and is <= 1.3e-4 on the finest (2x, below the 1600-cell mesh's figure); the extrapolated
-# diffusivity within 10% of the isobaric one (measured -3.9%).
+# 3.31e-4, 1.55e-4, 6.46e-5) and is <= 8.0e-5 on the finest (1.24x, not 2x: a heat conductivity 5% too large, alpha^2
+# x 1.05 in the heat flux, gives 9.82e-5 and passed the former 2x bound of 1.3e-4; mutation test of issue 15); the
+# extrapolated diffusivity within 10% of the isobaric one (measured -3.9%; +0.6% with that 5% error, so this
+# figure alone cannot see it).
 add_test(NAME heat_conduction_fourier
-         COMMAND ${PYTHON} ${SCRIPTS}/heat_conduction.py ${UNILAG} ${INPUTS}/heat_conduction2d.yaml ${WORK} --max-fine-l1 1.3e-4)
+         COMMAND ${PYTHON} ${SCRIPTS}/heat_conduction.py ${UNILAG} ${INPUTS}/heat_conduction2d.yaml ${WORK} --max-fine-l1 8.0e-5)
 # Beryllium shell collapse at V0 = 417.1, 454.7, 490.2 m/s, second order, thin wedge, --check
 # (tests/scripts/shell_collapse.py): on a coarse and a fine mesh the final inner radius converges from above
 # (r_coarse > r_fine > exact) at an observed order >= 1, and the fine one is within a bound of 5, 4.5, 4 cm.
