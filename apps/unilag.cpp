@@ -30,8 +30,10 @@ usage:
 options:
   --set KEY=VALUE    override a scene key; nested keys with dots, e.g. --set mesh.size=0.02 --set time.end=0.5
   --output DIR       output folder (default: the scene's output.directory)
-  --check            assert conservation (mass, momentum, energy, GCL to round-off) and the scene's error
-                     bounds; exit 3 with the failing figure otherwise
+  --check            continuum: assert conservation (momentum, energy, GCL, the cells' tiling), the force
+                     balance at every node and no work by walls, to round-off, and the scene's error bounds;
+                     tube: every onset speed converged (a twice finer discretisation agrees within 1e-3);
+                     exit 3 with the failing figure otherwise
   --threads N        Kokkos threads per rank (default: OMP_NUM_THREADS)
   --quiet            no progress line
 

@@ -148,3 +148,54 @@ TEST(VolumeIdentity, HoldsAndCatchesAnInconsistentNode)
 }
 
 } // namespace
+
+namespace
+{
+
+// Slip walls meeting at an obtuse corner (a parallelogram with 110 and 70 degree corners): the nodal solver must
+// constrain both walls at each corner (their normals are 70 or 110 degrees apart, beyond the ~45 degrees under which
+// faceted walls are clustered into one), so corner nodes stay put, and every wall node slides along its wall.
+// Mutation testing (issue 15) found that no test mesh had such a corner: a clustering threshold of 78 degrees went
+// unnoticed.
+TEST(SlipWalls, ObtuseCornersHoldBothWalls)
+{
+    const double shear = -0.36397023426620234; // cot(110 degrees): x' = x + shear * y
+    auto h = unilag_test::squareMesh(6, 0.2, 5);
+    for (LO r = 0; r < h.nNodes(); ++r)
+        h.x[2 * r] += shear * h.x[2 * r + 1];
+    unilag_test::connect<D>(h, [](int common) { return unilag_test::wallGroup(common) >= 0 ? 0 : -1; });
+    auto scene = unilag_test::gasScene(D, unilag_test::constant(1.0), unilag_test::expression("2 - x + 0.5 * y"),
+                                       {unilag_test::expression("0.2 * y"), unilag_test::expression("0.1 * x")});
+    scene.boundaries["walls"] = unilag_test::slipWall();
+    unilag_test::SolverHarness<D> hs(scene, unilag_test::globalMesh<D>(h, {"walls"}));
+    ASSERT_EQ(hs.error, "");
+    unilag::GprSystem<D, P> system(hs.model, true);
+    system.start();
+    const auto& dm = *hs.model.mesh;
+    // outward normals of the sides x = 0 and x = 1 (slanted) and y = 0, y = 1, by the wall bits of HostMesh
+    const double len = std::sqrt(1.0 + shear * shear);
+    const double normal[4][2] = {{-1.0 / len, shear / len}, {1.0 / len, -shear / len}, {0.0, -1.0}, {0.0, 1.0}};
+    const double dt = unilag_test::loopStep(system, 0.0, 0,
+                                            [&](double)
+                                            {
+                                                const auto v = hs.host("v_node");
+                                                const LO n = dm.nNodes;
+                                                double vmax = 0.0, worst = 0.0;
+                                                for (LO r = 0; r < n; ++r)
+                                                    vmax = std::max(vmax, std::hypot(v[r], v[n + r]));
+                                                ASSERT_GT(vmax, 1e-3);
+                                                for (LO r = 0; r < n; ++r)
+                                                {
+                                                    const int bits = h.wall[dm.nodeGid[r]];
+                                                    for (int w = 0; w < 4; ++w)
+                                                        if (bits & (1 << w))
+                                                            worst = std::max(worst, std::abs(v[r] * normal[w][0] +
+                                                                                             v[n + r] * normal[w][1]));
+                                                }
+                                                EXPECT_LE(worst, 1e-15 * vmax) << "a wall node leaves its wall";
+                                            });
+    ASSERT_GT(dt, 0.0);
+    EXPECT_LT(system.balance().maxImbalance, 1e-13);
+}
+
+} // namespace
