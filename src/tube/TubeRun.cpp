@@ -13,6 +13,7 @@
 #include "core/Errors.hpp"
 #include "core/Format.hpp"
 #include "core/Mpi.hpp"
+#include "io/OutputFolder.hpp"
 #include "solver/Summary.hpp"
 #include "tube/LinearStability.hpp"
 #include "tube/TubeScene.hpp"
@@ -276,6 +277,11 @@ int runTube(const std::string& scenePath, const std::vector<std::string>& overri
         scene = readTubeScene(scenePath, overrides);
         if (!outputDir.empty())
             scene.outputDirectory = outputDir;
+        // as for continuum runs (Run.cpp): an output folder that cannot be written is bad input, before any work
+        const std::string problem = rank == 0 ? io::outputFolderProblem(scene.outputDirectory) : std::string();
+        if (!problem.empty())
+            throw InputError((outputDir.empty() ? scene.file + ": key 'output.directory'" : std::string("--output")) +
+                             " '" + scene.outputDirectory + "': " + problem);
     }
     catch (const InputError& e)
     {

@@ -51,3 +51,7 @@ add_test(NAME tube_check_fails_coarse COMMAND bash ${SCRIPTS}/expect_check_failu
          "beta = 0.5: onset u = .* with 6 elements but .* with 12" -- ${UNILAG_TUBE} ${TUBE_SCENE} --check
          --set stability.beta=[0.5] --set stability.elements=6 --set stability.modes=4 --set output.plot=false)
 set_tests_properties(tube_check_fails_coarse PROPERTIES LABELS "tube;regression")
+# An output folder that cannot be made is refused before the study (the continuum runs' check, io::OutputFolder).
+add_test(NAME tube_error_output_file COMMAND bash ${SCRIPTS}/expect_error.sh ${TUBE_SCENE}/out
+         "--output '.*tube_stability.yaml/out': .*tube_stability.yaml is not a folder" -- ${UNILAG_TUBE} ${TUBE_SCENE})
+set_tests_properties(tube_error_output_file PROPERTIES LABELS "tube;regression")
