@@ -17,6 +17,7 @@
 #include "solver/Summary.hpp"
 #include "tube/LinearStability.hpp"
 #include "tube/TubeScene.hpp"
+#include "tube/TubeTimeRun.hpp"
 
 #ifndef UNILAG_SOURCE_DIR
 #define UNILAG_SOURCE_DIR "."
@@ -294,6 +295,8 @@ int runTube(const std::string& scenePath, const std::vector<std::string>& overri
             std::fprintf(stderr, "unilag: error: %s\n", error.c_str());
         return ExitInput;
     }
+    if (scene.hasDynamics)
+        return runTubeDynamics(scene, check, comm);
     const StudyTables tables = runStudy(scene, comm);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (rank == 0)

@@ -134,6 +134,19 @@ void readStability(ConfigNode& root, TubeScene& s)
     st.rejectUnknown();
 }
 
+//! dynamics: a time run of the physical tube (its stiffnesses and masses come from tube: and fluid:).
+void readDynamicsSection(ConfigNode& root, TubeScene& s)
+{
+    if (!root.has("dynamics"))
+        return;
+    ConfigNode d = root.sub("dynamics");
+    if (!s.hasPhysical)
+        d.fail("end_time", "a time run needs the physical tube (tube.length, radii, youngs_modulus, density and "
+                           "fluid.density)");
+    s.dynamics = readDynamics(d);
+    s.hasDynamics = true;
+}
+
 void readOutput(ConfigNode& root, TubeScene& s)
 {
     ConfigNode o = root.sub("output");
@@ -208,6 +221,7 @@ TubeScene readTubeScene(const std::string& file, const std::vector<std::string>&
     readTube(root, s);
     readEnds(root, s);
     readStability(root, s);
+    readDynamicsSection(root, s);
     readOutput(root, s);
     root.rejectUnknown();
     s.resolved = std::make_shared<Teuchos::ParameterList>(*top);

@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "tube/TubeDynamicsScene.hpp"
+
 namespace Teuchos
 {
 class ParameterList;
@@ -71,6 +73,8 @@ struct TubeScene
     PhysicalTube physical;
     EndCondition left = EndCondition::Clamped, right = EndCondition::Free; //!< flow enters at the left end
     StabilityStudy stability;
+    bool hasDynamics = false;  //!< `dynamics:` given: a nonlinear time run instead of the stability study
+    DynamicsSettings dynamics; //!< (needs the physical tube)
     std::string outputDirectory;
     bool plot = true;                                 //!< write stability.png (apps/tube_stability_plot.py)
     std::shared_ptr<Teuchos::ParameterList> resolved; //!< the scene after --set, for scene.yaml

@@ -1,0 +1,27 @@
+/*! \file GrowthFit.hpp
+ *  \brief The growth rate and frequency of an oscillation from its time series (the tip's distance from the
+ *  straight axis in a flutter run): least squares of log(peak) against time over the local maxima of the
+ *  amplitude after a start time. A planar oscillation y = a e^(sigma t) sin(omega t) has |y|'s peaks every half
+ *  period, so omega = pi / (mean spacing); a whirling (3D) one has few peaks, and then log|y| itself is fitted.
+ */
+#pragma once
+
+#include <vector>
+
+namespace unilag::tube
+{
+
+struct GrowthFit
+{
+    bool ok = false;          //!< enough samples (at least 4 peaks, or a whirl over the window) to fit
+    double growthRate = 0.0;  //!< sigma, per unit of t
+    double frequency = 0.0;   //!< omega (rad per unit of t), 0 when the fit is not over peaks
+    int peaks = 0;            //!< peaks in the window
+    double lastPeak = 0.0;    //!< the last peak's amplitude (the limit-cycle amplitude once it saturates)
+    double residual = 0.0;    //!< rms of the log fit (small: one exponential)
+};
+
+//! The fit of amplitude(t) over t >= from. t increasing; amplitude >= 0 (a distance).
+GrowthFit fitGrowth(const std::vector<double>& t, const std::vector<double>& amplitude, double from);
+
+} // namespace unilag::tube

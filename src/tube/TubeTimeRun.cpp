@@ -1,0 +1,323 @@
+#include "tube/TubeTimeRun.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+#include <fstream>
+#include <iomanip>
+#include <memory>
+
+#include <Kokkos_Core.hpp>
+
+#include "core/Errors.hpp"
+#include "core/Format.hpp"
+#include "core/Mpi.hpp"
+#include "io/XdmfWriter.hpp"
+#include "solver/Summary.hpp"
+#include "solver/TimeLoop.hpp"
+#include "tube/GrowthFit.hpp"
+#include "tube/LinearStability.hpp"
+#include "tube/TubeDynamics.hpp"
+
+namespace unilag
+{
+namespace
+{
+
+using namespace tube;
+constexpr double kPi = 3.14159265358979323846;
+//! --check's bound on the energy change of a run with nothing pumped in (the splitting's error is bounded, O(dt^2)).
+constexpr double kEnergyTolerance = 1e-5;
+
+//! The rod's constants per unit length from the physical tube (tube.md 1.3: A_w, I, J_p = 2I, G = E/(2(1+nu))).
+RodConstants rodConstants(const PhysicalTube& p, const DynamicsSettings& d)
+{
+    const double areaWall = kPi * (p.outerRadius * p.outerRadius - p.innerRadius * p.innerRadius);
+    const double inertia = kPi * (std::pow(p.outerRadius, 4) - std::pow(p.innerRadius, 4)) / 4.0;
+    const double shearModulus = p.youngsModulus / (2.0 * (1.0 + p.poissonRatio));
+    RodConstants c;
+    c.length = p.length;
+    c.extension = p.youngsModulus * areaWall;
+    c.shear = p.shearCoefficient * shearModulus * areaWall;
+    c.bending = p.youngsModulus * inertia;
+    c.torsion = shearModulus * 2.0 * inertia;
+    c.wallMass = p.wallDensity * areaWall;
+    c.wallRotary = p.wallDensity * inertia;
+    c.fluidMass = p.fluidMassPerLength();
+    c.gravity = d.gravity;
+    return c;
+}
+
+//! The linear model of the same tube, for u_cf and the linear growth rate at the run's speed.
+LinearStability linearModel(const TubeScene& scene)
+{
+    TubeDiscretisation disc;
+    disc.model = TubeModel::EulerBernoulli;
+    disc.left = scene.left;
+    disc.right = scene.right;
+    disc.elements = scene.stability.elements;
+    disc.modes = scene.stability.modes;
+    return LinearStability(disc, scene.physical.massRatio());
+}
+
+//! The perturbation's shape along the tube, 1 at its largest: a tip-load deflection when the right end is free.
+double perturbationShape(const TubeScene& scene, double s)
+{
+    const double x = s / scene.physical.length;
+    return scene.right == EndCondition::Free ? 0.5 * x * x * (3.0 - x) : std::sin(kPi * x);
+}
+
+struct TipSeries
+{
+    std::vector<double> t, x, y, z, distance;
+    void add(double time, const std::array<double, 3>& tip)
+    {
+        t.push_back(time);
+        x.push_back(tip[0]);
+        y.push_back(tip[1]);
+        z.push_back(tip[2]);
+        distance.push_back(std::hypot(tip[1], tip[2]));
+    }
+};
+
+//! The tube as a TimeSystem: an explicit step has no retry (a non-finite state stops the run with a diagnosis).
+class TubeTimeSystem : public TimeSystem
+{
+  public:
+    TubeTimeSystem(TubeDynamics& rod, const DynamicsSettings& d, const std::string& dir)
+        : rod_(rod), factor_(d.stepFactor), writer_(MPI_COMM_SELF, dir, "tube", io::CellType::Polyline)
+    {
+        std::vector<long long> segments;
+        for (int j = 0; j + 1 < rod.nodes(); ++j)
+            segments.insert(segments.end(), {j, j + 1});
+        writer_.setTopology(rod.nodes(), rod.nodes() - 1, segments);
+        tip.add(0.0, rod.tip());
+    }
+    double prepareStep(double, long) override { return factor_ * rod_.stableStep(); }
+    void beginAttempts() override {}
+    bool attemptStep(double, double dt, int, int& iterations) override
+    {
+        iterations = 0;
+        rod_.step(dt);
+        return rod_.finite();
+    }
+    std::string failure(double t, double dt, int) override
+    {
+        return "the tube's state is not finite after the step from t = " + jsonNumber(t) + " s with dt = " +
+               jsonNumber(dt) + " s (stable step " + jsonNumber(rod_.stableStep()) +
+               " s): the amplitude grew beyond what the rod can carry, or step_factor is too large";
+    }
+    void acceptStep(double t, double dt, int) override { tip.add(t + dt, rod_.tip()); }
+    std::string collapse(double t, double dt, long step) override
+    {
+        return "the stable step fell to " + jsonNumber(dt) + " s at t = " + jsonNumber(t) + " s (step " +
+               std::to_string(step) + ")";
+    }
+    void write(int index, double t) override
+    {
+        const RodFields f = rod_.fields();
+        writer_.writeStep(index, t, f.position, {},
+                          {{"velocity", 3, f.velocity.data()},
+                           {"curvature", 1, f.curvature.data()},
+                           {"fluid_velocity", 1, f.fluidVelocity.data()},
+                           {"pressure", 1, f.pressure.data()},
+                           {"area", 1, f.area.data()}});
+    }
+    std::vector<double> totals() override
+    {
+        const auto p = rod_.linearMomentum(), l = rod_.angularMomentum();
+        return {rod_.energy(), p[0], p[1], p[2], l[0], l[1], l[2]};
+    }
+
+    TipSeries tip;
+
+  private:
+    TubeDynamics& rod_;
+    double factor_;
+    io::XdmfWriter writer_;
+};
+
+void writeTipCsv(const TipSeries& s, int maxRows, const std::string& file)
+{
+    std::ofstream out(file);
+    out << "t,x,y,z,distance\n" << std::setprecision(10);
+    const std::size_t n = s.t.size(), stride = std::max<std::size_t>(1, (n + maxRows - 1) / maxRows);
+    for (std::size_t i = 0; i < n; i += stride)
+        out << s.t[i] << ',' << s.x[i] << ',' << s.y[i] << ',' << s.z[i] << ',' << s.distance[i] << '\n';
+}
+
+//! Everything the summary reports beyond the loop's own entries.
+struct RunFigures
+{
+    double flowSpeed = 0, uDimensionless = 0, uCritical = NAN, linearGrowth = NAN, linearFrequency = NAN;
+    GrowthFit fit;
+    double outOfPlane = 0, orthogonality = 0, wall = 0, nodeStepsPerSecond = 0;
+};
+
+RunFigures measure(const TubeScene& scene, const TipSeries& tip, const TubeDynamics& rod)
+{
+    RunFigures f;
+    const DynamicsSettings& d = scene.dynamics;
+    f.fit = fitGrowth(tip.t, tip.distance, d.fitFrom * d.endTime);
+    double maxDistance = 0.0, maxZ = 0.0;
+    for (std::size_t i = 0; i < tip.t.size(); ++i)
+    {
+        maxDistance = std::max(maxDistance, tip.distance[i]);
+        maxZ = std::max(maxZ, std::abs(tip.z[i]));
+    }
+    f.outOfPlane = maxDistance > 0.0 ? maxZ / maxDistance : 0.0;
+    f.orthogonality = rod.orthogonalityDefect();
+    return f;
+}
+
+void writeSummary(const TubeScene& scene, const LoopResult& loop, const RunFigures& f, int nodes, int threads,
+                  const std::string& file)
+{
+    const PhysicalTube& p = scene.physical;
+    const double T = p.timeScale();
+    Summary s = runSummary(scene.file, scene.name, loop, 3, nodes - 1, nodes, 1, threads);
+    s.text("solver", "tube dynamics").text("model", "geometric rod (Cosserat, SE(3)), constant cross-section");
+    s.object("ends", {{"left", "\"" + std::string(endName(scene.left)) + "\""},
+                      {"right", "\"" + std::string(endName(scene.right)) + "\""}});
+    s.integer("segments", scene.dynamics.segments).number("beta", p.massRatio());
+    s.number("flow_speed", f.flowSpeed).number("u", f.uDimensionless).number("u_cf_linear", f.uCritical);
+    s.number("u_over_u_cf", f.uDimensionless / f.uCritical);
+    s.text("growth_rate_units", "1/s; *_dimensionless: per tau = t sqrt(EI/(M+m))/L^2 (tube.md 2.1)");
+    s.number("growth_rate", f.fit.ok ? f.fit.growthRate : NAN);
+    s.number("growth_rate_dimensionless", f.fit.ok ? f.fit.growthRate * T : NAN);
+    s.number("linear_growth_rate_dimensionless", f.linearGrowth);
+    s.number("frequency_dimensionless", f.fit.ok ? f.fit.frequency * T : NAN);
+    s.number("linear_frequency_dimensionless", f.linearFrequency);
+    s.integer("tip_peaks_fitted", f.fit.peaks).number("tip_amplitude", f.fit.lastPeak);
+    s.number("out_of_plane_ratio", f.outOfPlane);
+    if (loop.initialTotals.size() == 7 && loop.finalTotals.size() == 7)
+    {
+        const double e0 = loop.initialTotals[0], e1 = loop.finalTotals[0];
+        s.number("energy_initial", e0).number("energy_final", e1);
+        s.number("energy_relative_change", e0 != 0.0 ? (e1 - e0) / std::abs(e0) : 0.0);
+    }
+    s.number("orthogonality_defect", f.orthogonality);
+    s.number("wall_seconds", f.wall).number("node_steps_per_second", f.nodeStepsPerSecond);
+    s.write(file);
+}
+
+//! U from the scene: m/s, or a fraction of the linear u_cf; fills the linear figures at that speed.
+void resolveFlow(const TubeScene& scene, RunFigures& f)
+{
+    const PhysicalTube& p = scene.physical;
+    const LinearStability linear = linearModel(scene);
+    const StabilityStudy& st = scene.stability;
+    const Onset onset = linear.firstInstability({st.speedMax, st.speedStep, st.tolerance});
+    f.uCritical = onset.found ? onset.speed : NAN;
+    const DynamicsSettings& d = scene.dynamics;
+    f.flowSpeed = std::isnan(d.criticalFraction) ? d.flowSpeed : d.criticalFraction * f.uCritical * p.velocityScale();
+    f.uDimensionless = f.flowSpeed / p.velocityScale();
+    if (!std::isfinite(f.flowSpeed))
+        throw InputError(scene.file + ": key 'dynamics.flow.critical_fraction': the tube has no critical speed below "
+                                      "stability.speed_max = " + jsonNumber(st.speedMax));
+    const std::vector<Mode> spectrum = linear.spectrum(f.uDimensionless);
+    f.linearGrowth = -INFINITY;
+    for (const Mode& m : spectrum)
+        if (m.growth() > f.linearGrowth)
+        {
+            f.linearGrowth = m.growth();
+            f.linearFrequency = std::abs(m.frequency());
+        }
+}
+
+/*! --check of a time run: rotations orthogonal to round-off; with no flow and no gravity nothing pumps energy in,
+ *  so the energy must come back to its initial value within the splitting's bounded error. */
+int checkRun(const TubeScene& scene, const LoopResult& loop, const RunFigures& f)
+{
+    std::vector<std::string> fails;
+    if (!(f.orthogonality <= 1e-12))
+        fails.push_back("rotations drift from orthogonal: max |Lambda^T Lambda - I| = " + jsonNumber(f.orthogonality) +
+                        " > 1e-12");
+    const auto& g = scene.dynamics.gravity;
+    const bool conservative = f.flowSpeed == 0.0 && g[0] == 0.0 && g[1] == 0.0 && g[2] == 0.0;
+    const double e0 = loop.initialTotals[0], e1 = loop.finalTotals[0];
+    const double change = e0 != 0.0 ? std::abs(e1 - e0) / std::abs(e0) : 0.0;
+    if (conservative && !(change <= kEnergyTolerance))
+        fails.push_back("energy changed by " + jsonNumber(change) + " (relative) with no flow and no gravity (> " +
+                        jsonNumber(kEnergyTolerance) + "): lower dynamics.step_factor");
+    for (const auto& m : fails)
+        std::fprintf(stderr, "unilag: check failed: %s\n", m.c_str());
+    if (fails.empty())
+        std::printf("unilag: check passed\n");
+    return fails.empty() ? ExitOk : ExitCheck;
+}
+
+//! Rank 0's run; returns the exit code.
+int runOnRankZero(const TubeScene& scene, bool check)
+{
+    const DynamicsSettings& d = scene.dynamics;
+    RunFigures f;
+    resolveFlow(scene, f);
+    RodSetup setup;
+    setup.segments = d.segments;
+    setup.left = scene.left;
+    setup.right = scene.right;
+    setup.flowSpeed = f.flowSpeed;
+    TubeDynamics rod(rodConstants(scene.physical, d), setup);
+    rod.setVelocity([&](double s) {
+        const double w = perturbationShape(scene, s);
+        return std::array<double, 3>{d.tipVelocity[0] * w, d.tipVelocity[1] * w, d.tipVelocity[2] * w};
+    });
+    const std::string dir = scene.outputDirectory;
+    std::filesystem::create_directories(dir);
+    writeTubeScene(scene, dir + "/scene.yaml");
+    TubeTimeSystem system(rod, d, dir);
+    TimeControl control;
+    control.endTime = d.endTime;
+    control.outputInterval = d.outputInterval;
+    control.maxRetries = 0;
+    const auto start = std::chrono::steady_clock::now();
+    const LoopResult loop = runTimeLoop(system, control, MPI_COMM_SELF);
+    f.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    f.nodeStepsPerSecond = loop.wallSeconds > 0 ? double(loop.state.steps) * rod.nodes() / loop.wallSeconds : 0.0;
+    const RunFigures measured = measure(scene, system.tip, rod);
+    f.fit = measured.fit;
+    f.outOfPlane = measured.outOfPlane;
+    f.orthogonality = measured.orthogonality;
+    writeTipCsv(system.tip, d.tipRows, dir + "/tip.csv");
+    writeSummary(scene, loop, f, rod.nodes(), Kokkos::DefaultExecutionSpace().concurrency(), dir + "/summary.json");
+    if (!loop.failure.empty())
+    {
+        std::fprintf(stderr, "unilag: error: %s: %s\n", scene.file.c_str(), loop.failure.c_str());
+        return ExitUnstable;
+    }
+    std::printf("unilag: %s: tube dynamics, %d segments, U = %.4g m/s (u/u_cf = %.4g), %ld steps in %.3g s, "
+                "growth rate %.4g (linear %.4g) per tau; output in %s\n",
+                scene.name.c_str(), d.segments, f.flowSpeed, f.uDimensionless / f.uCritical, loop.state.steps, f.wall,
+                f.fit.ok ? f.fit.growthRate * scene.physical.timeScale() : NAN, f.linearGrowth, dir.c_str());
+    if (!check)
+        return ExitOk;
+    return checkRun(scene, loop, f);
+}
+
+} // namespace
+
+int runTubeDynamics(const TubeScene& scene, bool check, MPI_Comm comm)
+{
+    int code = ExitOk;
+    std::string error;
+    if (mpi::rank(comm) == 0)
+    {
+        try
+        {
+            code = runOnRankZero(scene, check);
+        }
+        catch (const InputError& e)
+        {
+            error = e.what();
+            code = ExitInput;
+        }
+    }
+    MPI_Bcast(&code, 1, MPI_INT, 0, comm);
+    if (!error.empty())
+        std::fprintf(stderr, "unilag: error: %s\n", error.c_str());
+    return code;
+}
+
+} // namespace unilag
