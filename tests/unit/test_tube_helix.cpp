@@ -1,0 +1,237 @@
+// The dispersion relation of a helical tube conveying fluid (src/tube/HelixDispersion, docs/tube-helix.md):
+// the straight Euler-Bernoulli limit, Timoshenko and the wave speeds, the stress-free helix, the symmetries, and
+// the compatibility sign of tube.md 1.2 checked numerically.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <array>
+#include <cmath>
+#include <complex>
+#include <vector>
+
+#include "tube/HelixDispersion.hpp"
+#include "tube/LinearStability.hpp"
+
+namespace
+{
+
+using namespace unilag::tube;
+using cd = std::complex<double>;
+
+//! Every root in `got` has a partner in `want` (a multiset match, greedy nearest) within tol (|w| + scale).
+::testing::AssertionResult sameRoots(std::vector<cd> got, std::vector<cd> want, double tol, double scale)
+{
+    if (got.size() != want.size())
+        return ::testing::AssertionFailure() << got.size() << " roots, expected " << want.size();
+    for (const cd& w : want)
+    {
+        auto best = std::min_element(got.begin(), got.end(),
+                                     [&](const cd& a, const cd& b) { return std::abs(a - w) < std::abs(b - w); });
+        const double err = std::abs(*best - w);
+        if (err > tol * (std::abs(w) + scale))
+            return ::testing::AssertionFailure() << "root " << w << ": nearest " << *best << ", error " << err;
+        got.erase(best);
+    }
+    return ::testing::AssertionSuccess();
+}
+
+HelixParameters ebLimit(double beta, double u)
+{
+    HelixParameters p = HelixParameters::dimensionless(beta, u);
+    p.inextensible = true;
+    p.noRotaryInertia = true;
+    return p;
+}
+
+// 1. Inextensible, unshearable, no rotary inertia, K -> 0: the bending branches are tube.md 2.1's pipe.
+TEST(TubeHelixStraight, InextensibleLimitIsTheEulerBernoulliPipe)
+{
+    for (double beta : {0.1, 0.2, 0.5, 0.8})
+        for (double u : {0.0, 1.0, 3.0})
+            for (double k : {0.3, 1.0, 2.5, 7.0})
+                for (double K : {0.0, 1e-9})
+                {
+                    HelixParameters p = ebLimit(beta, u); // p0 = 0
+                    p.helixK = K;
+                    p.helixAngle = M_PI / 4;
+                    p.requireEquilibrium = false; // K = 1e-9 with p0 = 0 is off equilibrium by O(K u^2)
+                    const auto ref = dispersionOmega(k, u, beta);
+                    // two bending planes: each root of tube.md 2.1 twice
+                    EXPECT_TRUE(sameRoots(helixDispersion(p, k), {ref[0], ref[1], ref[0], ref[1]}, 1e-8, k * k))
+                        << "beta " << beta << " u " << u << " k " << k << " K " << K;
+                }
+}
+
+// 1b. The true helical equilibrium as K -> 0 carries no base force (p0 A = -M U^2): the pipe without its
+// centrifugal term; a straight tube at pressure p0 has the k^2 coefficient u^2 + p0 A L^2 / EI.
+TEST(TubeHelixStraight, BaseForceSetsTheCentrifugalTerm)
+{
+    const double beta = 0.2, u = 2.0;
+    for (double k : {0.4, 1.3, 5.0})
+    {
+        HelixParameters p = ebLimit(beta, u);
+        p.helixK = 1e-9;
+        p.helixAngle = 0.7;
+        p.mu0 = p.equilibriumMu0();
+        ASSERT_TRUE(p.isEquilibrium());
+        auto ref = straightPipeOmega(k, u, beta, 0.0);
+        EXPECT_TRUE(sameRoots(helixDispersion(p, k), {ref[0], ref[1], ref[0], ref[1]}, 1e-8, k * k)) << k;
+
+        for (double pressure : {-3.0, 1.5}) // p0 A L^2 / EI
+        {
+            HelixParameters q = ebLimit(beta, u);
+            q.mu0 = q.zeroPressureMu0() - pressure;
+            EXPECT_NEAR(q.axialForce(), u * u + pressure, 1e-12);
+            ref = straightPipeOmega(k, u, beta, u * u + pressure);
+            EXPECT_TRUE(sameRoots(helixDispersion(q, k), {ref[0], ref[1], ref[0], ref[1]}, 1e-8, k * k)) << k;
+        }
+    }
+}
+
+//! Timoshenko's frequency equation, written independently: w and the section rotation phi,
+//! m_t w_tt = kGA (w'' - phi'), rho I phi_tt = EI phi'' + kGA (w' - phi); the two positive omega at k.
+std::array<double, 2> timoshenko(double k, double mt, double rhoI, double EI, double kGA)
+{
+    // m_t rhoI W^2 - W (m_t (EI k^2 + kGA) + rhoI kGA k^2) + kGA EI k^4 = 0, W = omega^2
+    const double a = mt * rhoI, b = -(mt * (EI * k * k + kGA) + rhoI * kGA * k * k), c = kGA * EI * std::pow(k, 4);
+    const double disc = std::sqrt(b * b - 4 * a * c);
+    const double lo = 2 * c / (-b + disc), hi = (-b + disc) / (2 * a);
+    return {std::sqrt(lo), std::sqrt(hi)};
+}
+
+// 2. Shear and extension, straight, no flow: Timoshenko (transverse mass m + M) and the wave speeds.
+TEST(TubeHelixStraight, TimoshenkoBendingAndWaveSpeeds)
+{
+    for (double slender : {10.0, 50.0})
+        for (double k : {0.5, 3.0, 20.0})
+        {
+            HelixParameters p = HelixParameters::dimensionless(0.3, 0.0, slender, 0.3, 0.5);
+            p.mu0 = 0.0;
+            const auto t = timoshenko(k, p.wallMass + p.fluidMass, p.bendingInertia, p.bendingStiffness,
+                                      p.shearStiffness);
+            const double torsion = k * std::sqrt(p.torsionalStiffness / p.torsionalInertia);
+            const double extension = k * std::sqrt(p.axialStiffness / p.wallMass); // the fluid stays put axially
+            std::vector<cd> want;
+            for (double w : {t[0], t[0], t[1], t[1], torsion, extension})
+            {
+                want.push_back(w);
+                want.push_back(-w);
+            }
+            EXPECT_TRUE(sameRoots(helixDispersion(p, k), want, 1e-9, 1.0)) << slender << " " << k;
+        }
+}
+
+// 3. The stress-free helix without flow: real frequencies, omega -> -omega at each k, the same set at -k, and the
+// rigid motions (omega = 0) at k = 0 and k = +-|Omega_0|.
+TEST(TubeHelixHelix, NoFlowIsStableAndSymmetric)
+{
+    for (double K : {0.5, 1.0, 3.0})
+        for (double angle : {M_PI / 4, M_PI / 3, 1.2})
+            for (bool inext : {false, true})
+            {
+                HelixParameters p = HelixParameters::dimensionless(0.2, 0.0);
+                p.helixK = K;
+                p.helixAngle = angle;
+                p.inextensible = p.noRotaryInertia = inext;
+                for (double k : {0.37, 1.0, 2.9, 6.0, 15.0})
+                {
+                    const auto w = helixDispersion(p, k), wm = helixDispersion(p, -k);
+                    EXPECT_EQ(w.size(), inext ? 4u : 12u);
+                    std::vector<cd> flipped;
+                    for (const cd& x : w)
+                    {
+                        EXPECT_LT(std::abs(x.imag()), 1e-9 * (1.0 + std::abs(x))) << K << " " << k << " " << x;
+                        flipped.push_back(-std::conj(x));
+                    }
+                    EXPECT_TRUE(sameRoots(w, flipped, 1e-9, 1.0));
+                    EXPECT_TRUE(sameRoots(wm, w, 1e-9, 1.0));
+                }
+                const double c = K * M_PI;
+                for (double k : {c, -c})
+                {
+                    double low = 1e300;
+                    for (const cd& x : helixDispersion(p, k))
+                        low = std::min(low, std::abs(x));
+                    EXPECT_LT(low, 1e-4) << "rigid motion at k = " << k; // a double root: ~ sqrt(eps |M0|)
+                }
+            }
+}
+
+// 3b. With flow: the reality of the fields gives omega(-k) = -conj(omega(k)) (no omega -> -omega at fixed k).
+TEST(TubeHelixHelix, FlowSymmetryAndEquilibriumGuard)
+{
+    HelixParameters p = HelixParameters::dimensionless(0.2, 2.0);
+    p.helixK = 1.0;
+    p.helixAngle = M_PI / 4;
+    EXPECT_FALSE(p.isEquilibrium()); // p0 = 0: the fluid's thrust M U^2 bends the helix
+    EXPECT_THROW(helixDispersion(p, 1.0), std::invalid_argument);
+    p.mu0 = p.equilibriumMu0();
+    EXPECT_TRUE(p.isEquilibrium());
+    for (double k : {0.5, 2.0, 7.0})
+    {
+        std::vector<cd> mirrored;
+        for (const cd& x : helixDispersion(p, -k))
+            mirrored.push_back(-std::conj(x));
+        EXPECT_TRUE(sameRoots(helixDispersion(p, k), mirrored, 1e-9, 1.0)) << k;
+    }
+}
+
+// The compatibility condition of tube.md 1.2, checked on a smooth Lambda(s, t) = exp(a(s, t)^) by finite
+// differences: d_t Omega - d_s omega = Omega x omega (not omega x Omega).
+using M3 = std::array<std::array<double, 3>, 3>;
+M3 mul(const M3& a, const M3& b)
+{
+    M3 r{};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            for (int l = 0; l < 3; ++l)
+                r[i][j] += a[i][l] * b[l][j];
+    return r;
+}
+M3 rotation(double s, double t)
+{
+    const std::array<double, 3> a{0.3 * std::sin(s + 2 * t), 0.7 * s * t + 0.2, 0.5 * std::cos(1.3 * s - t)};
+    const double th = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+    const M3 h{{{0, -a[2], a[1]}, {a[2], 0, -a[0]}, {-a[1], a[0], 0}}};
+    const M3 h2 = mul(h, h);
+    M3 r{};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            r[i][j] = (i == j) + std::sin(th) / th * h[i][j] + (1 - std::cos(th)) / (th * th) * h2[i][j];
+    return r;
+}
+//! (Lambda^T dLambda)^vee, dLambda by a central difference along (ds, dt).
+std::array<double, 3> bodyRate(double s, double t, double ds, double dt)
+{
+    const M3 l = rotation(s, t), p = rotation(s + ds, t + dt), m = rotation(s - ds, t - dt);
+    M3 lt{}, d{};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+        {
+            lt[i][j] = l[j][i];
+            d[i][j] = (p[i][j] - m[i][j]) / (2 * (ds + dt));
+        }
+    const M3 x = mul(lt, d);
+    return {x[2][1], x[0][2], x[1][0]};
+}
+
+TEST(TubeHelixKinematics, CompatibilitySign)
+{
+    const double s = 0.4, t = 0.9, h = 1e-4;
+    auto Om = [&](double ss, double tt) { return bodyRate(ss, tt, h, 0.0); };
+    auto om = [&](double ss, double tt) { return bodyRate(ss, tt, 0.0, h); };
+    const auto O = Om(s, t), o = om(s, t);
+    const std::array<double, 3> cross{O[1] * o[2] - O[2] * o[1], O[2] * o[0] - O[0] * o[2], O[0] * o[1] - O[1] * o[0]};
+    const double H = 1e-3;
+    double normCross = 0.0;
+    for (int i = 0; i < 3; ++i)
+    {
+        const double lhs =
+            (Om(s, t + H)[i] - Om(s, t - H)[i]) / (2 * H) - (om(s + H, t)[i] - om(s - H, t)[i]) / (2 * H);
+        EXPECT_NEAR(lhs, cross[i], 1e-5) << i;
+        normCross += cross[i] * cross[i];
+    }
+    EXPECT_GT(std::sqrt(normCross), 1e-2); // the check has teeth: omega x Omega would fail
+}
+
+} // namespace
