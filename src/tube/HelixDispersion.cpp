@@ -111,8 +111,8 @@ V units(int n, int first) { return {Lin::unit(n, first), Lin::unit(n, first + 1)
 HelixParameters HelixParameters::dimensionless(double beta, double u, double slenderness, double poisson,
                                                double shearCoefficient)
 {
-    if (!(beta > 0.0 && beta < 1.0))
-        throw std::invalid_argument("HelixParameters::dimensionless: beta must lie in (0, 1)");
+    if (!(beta >= 0.0 && beta < 1.0) || (beta == 0.0 && u != 0.0))
+        throw std::invalid_argument("HelixParameters::dimensionless: beta must lie in [0, 1) (u = 0 if beta = 0)");
     HelixParameters p;
     const double l2 = slenderness * slenderness;
     p.bendingStiffness = 1.0;
@@ -123,7 +123,7 @@ HelixParameters HelixParameters::dimensionless(double beta, double u, double sle
     p.wallMass = 1.0 - beta;
     p.bendingInertia = p.wallMass / l2;
     p.torsionalInertia = 2.0 * p.bendingInertia;
-    p.flowSpeed = u / std::sqrt(beta);
+    p.flowSpeed = beta > 0.0 ? u / std::sqrt(beta) : 0.0;
     p.length = 1.0;
     p.mu0 = p.zeroPressureMu0();
     return p;

@@ -48,7 +48,8 @@ struct HelixParameters
 
     /*! tube.md 2.1's units (L = EI = M + m = 1), M = beta, m = 1 - beta, U = u / sqrt(beta), for a thin circular
      *  tube of slenderness L / r_g (r_g the wall's radius of gyration): EA = EI (L/r_g)^2, G J_p = EI / (1 + nu),
-     *  kGA = shearCoefficient EA / (2 (1 + nu)), rho_w I = m / (L/r_g)^2, rho_w J_p = 2 rho_w I. mu0: p0 = 0. */
+     *  kGA = shearCoefficient EA / (2 (1 + nu)), rho_w I = m / (L/r_g)^2, rho_w J_p = 2 rho_w I. mu0: p0 = 0.
+     *  beta = 0 (u = 0) is the rod without fluid. */
     static HelixParameters dimensionless(double beta, double u, double slenderness = 50.0, double poisson = 0.3,
                                          double shearCoefficient = 0.5);
 
