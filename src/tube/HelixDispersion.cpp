@@ -298,14 +298,20 @@ std::vector<HelixMode> helixModes(const HelixParameters& p, double k)
         HelixMode mode;
         mode.omega = s * alpha[std::size_t(e)] / beta[std::size_t(e)];
         mode.shape.resize(std::size_t(n));
-        double nrm = 0.0;
         for (int j = 0; j < n; ++j)
-        {
             mode.shape[std::size_t(j)] = vr[std::size_t(j) + std::size_t(e) * N] * colScale[std::size_t(j)];
-            nrm += std::norm(mode.shape[std::size_t(j)]);
+        // (Sigma, Psi) of unit 2-norm, its largest entry real and positive
+        double nrm = 0.0;
+        std::size_t big = 0;
+        for (std::size_t j = 0; j < 6; ++j)
+        {
+            nrm += std::norm(mode.shape[j]);
+            if (std::abs(mode.shape[j]) > std::abs(mode.shape[big]))
+                big = j;
         }
+        const cd phase = nrm > 0.0 ? std::abs(mode.shape[big]) / mode.shape[big] / std::sqrt(nrm) : cd(1.0);
         for (auto& x : mode.shape)
-            x /= std::sqrt(nrm);
+            x *= phase;
         modes.push_back(std::move(mode));
     }
     std::sort(modes.begin(), modes.end(),

@@ -65,7 +65,9 @@ struct HelixParameters
 //! constraint force (3).
 constexpr int kHelixFields = 8;
 
-//! One root omega(k) and its amplitude vector (normalised to unit 2-norm; see kHelixFields for the order).
+/*! One root omega(k) and its amplitude vector x (order: see kHelixFields), scaled so that (Sigma, Psi) has unit
+ *  2-norm and its largest entry is real and positive. The perturbation is Re(x exp(i (omega t - k s))):
+ *  delta r = Lambda_0 Psi, delta Lambda = Lambda_0 Sigma^ (to first order). */
 struct HelixMode
 {
     std::complex<double> omega;
