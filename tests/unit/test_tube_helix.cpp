@@ -261,6 +261,28 @@ std::array<double, 3> bodyRate(double s, double t, double ds, double dt)
     return {x[2][1], x[0][2], x[1][0]};
 }
 
+M3 transpose(const M3& a)
+{
+    M3 r{};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            r[i][j] = a[j][i];
+    return r;
+}
+M3 expHat(const std::array<double, 3>& a)
+{
+    const double th = std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+    const M3 h{{{0, -a[2], a[1]}, {a[2], 0, -a[0]}, {-a[1], a[0], 0}}};
+    const M3 h2 = mul(h, h);
+    const double c1 = th < 1e-4 ? 1 - th * th / 6 : std::sin(th) / th;
+    const double c2 = th < 1e-4 ? 0.5 - th * th / 24 : (1 - std::cos(th)) / (th * th);
+    M3 r{};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            r[i][j] = (i == j) + c1 * h[i][j] + c2 * h2[i][j];
+    return r;
+}
+
 TEST(TubeHelixKinematics, CompatibilitySign)
 {
     const double s = 0.4, t = 0.9, h = 1e-4;
@@ -278,6 +300,198 @@ TEST(TubeHelixKinematics, CompatibilitySign)
         normCross += cross[i] * cross[i];
     }
     EXPECT_GT(std::sqrt(normCross), 1e-2); // the check has teeth: omega x Omega would fail
+}
+
+/*! The linearisation against the nonlinear equations of tube.md 1.4 themselves: the tube Lambda = Lambda_0 exp(eps
+ *  Sigma^), r = r_0 + eps Lambda_0 Psi, u = U + eps v, A mu = A mu0 + eps q with real fields Re(x exp(i(omega t - k
+ *  s))) for an arbitrary x and real omega; the body quantities (Omega, omega by differences of Lambda) go into the
+ *  nonlinear momenta and equations, whose s and t derivatives are taken by 4th-order differences; (R(eps) -
+ *  R(-eps)) / 2 eps must equal Re(helixPencil(omega) x exp(i(omega t - k s))). Measured: 7e-7 (u = 0) and 2.5e-6
+ *  (u = 2) of the largest entry; flipping the sign of one cross term or a factor of the fluid momentum gives 4e-2..3. */
+struct NonlinearTube
+{
+    HelixParameters p;
+    std::array<double, 3> w;
+    double k, omega, eps;
+    std::vector<cd> x;
+
+    double field(int j, double s, double t, int ds = 0, int dt = 0) const
+    {
+        cd f = x[std::size_t(j)] * std::exp(cd(0.0, omega * t - k * s));
+        for (int i = 0; i < ds; ++i)
+            f *= cd(0.0, -k);
+        for (int i = 0; i < dt; ++i)
+            f *= cd(0.0, omega);
+        return f.real();
+    }
+    std::array<double, 3> vec(int first, double s, double t, int ds = 0, int dt = 0) const
+    {
+        return {field(first, s, t, ds, dt), field(first + 1, s, t, ds, dt), field(first + 2, s, t, ds, dt)};
+    }
+    //! E = Lambda_0^T Lambda = exp(eps Sigma^); the base frame drops out of every body quantity.
+    M3 frame(double s, double t) const
+    {
+        auto a = vec(0, s, t);
+        for (auto& c : a)
+            c *= eps;
+        return expHat(a);
+    }
+    template <class F> static auto d4(F f, double x, double h)
+    {
+        auto a = f(x + 2 * h), b = f(x + h), c = f(x - h), d = f(x - 2 * h);
+        for (std::size_t i = 0; i < a.size(); ++i)
+            a[i] = (-a[i] + 8 * b[i] - 8 * c[i] + d[i]) / (12 * h);
+        return a;
+    }
+    static constexpr double hIn = 1e-4, hOut = 2e-3;
+    //! (Omega, omega, Gamma, gamma, u, A mu) at (s, t)
+    struct Body
+    {
+        std::array<double, 3> Om, om, Ga, ga;
+        double u, amu;
+    };
+    Body body(double s, double t) const
+    {
+        const M3 e = frame(s, t), et = transpose(e);
+        auto flat = [](const M3& m)
+        {
+            std::array<double, 9> r{};
+            for (int i = 0; i < 9; ++i)
+                r[std::size_t(i)] = m[std::size_t(i / 3)][std::size_t(i % 3)];
+            return r;
+        };
+        auto unflat = [](const std::array<double, 9>& r)
+        {
+            M3 m{};
+            for (int i = 0; i < 9; ++i)
+                m[std::size_t(i / 3)][std::size_t(i % 3)] = r[std::size_t(i)];
+            return m;
+        };
+        const M3 es = unflat(d4([&](double ss) { return flat(frame(ss, t)); }, s, hIn));
+        const M3 eT = unflat(d4([&](double tt) { return flat(frame(s, tt)); }, t, hIn));
+        const M3 W{{{0, -w[2], w[1]}, {w[2], 0, -w[0]}, {-w[1], w[0], 0}}};
+        M3 om = mul(et, eT), Om = mul(mul(et, W), e);
+        const M3 ees = mul(et, es);
+        for (int i = 0; i < 3; ++i)
+            for (int j = 0; j < 3; ++j)
+                Om[i][j] += ees[i][j];
+        Body b;
+        b.Om = {Om[2][1], Om[0][2], Om[1][0]};
+        b.om = {om[2][1], om[0][2], om[1][0]};
+        // Lambda^T r' = E^T (e1 + eps (W x Psi + Psi_s)), Lambda^T r_t = E^T eps Psi_t
+        const auto psi = vec(3, s, t), psiS = vec(3, s, t, 1, 0), psiT = vec(3, s, t, 0, 1);
+        const std::array<double, 3> wxp{w[1] * psi[2] - w[2] * psi[1], w[2] * psi[0] - w[0] * psi[2],
+                                        w[0] * psi[1] - w[1] * psi[0]};
+        std::array<double, 3> rs{1.0 + eps * (wxp[0] + psiS[0]), eps * (wxp[1] + psiS[1]), eps * (wxp[2] + psiS[2])};
+        for (int i = 0; i < 3; ++i)
+        {
+            b.Ga[std::size_t(i)] = 0.0;
+            b.ga[std::size_t(i)] = 0.0;
+            for (int j = 0; j < 3; ++j)
+            {
+                b.Ga[std::size_t(i)] += et[i][j] * rs[std::size_t(j)];
+                b.ga[std::size_t(i)] += et[i][j] * eps * psiT[std::size_t(j)];
+            }
+        }
+        b.u = p.flowSpeed + eps * field(6, s, t);
+        b.amu = p.mu0 + eps * field(7, s, t);
+        return b;
+    }
+    static std::array<double, 3> cross(const std::array<double, 3>& a, const std::array<double, 3>& b)
+    {
+        return {a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0]};
+    }
+    //! pi (3), P (3), Mm (3), F (3), A m, |Gamma|, the fluid flux terms A m u - A mu and |Gamma| u
+    std::array<double, 16> stresses(double s, double t) const
+    {
+        const Body b = body(s, t);
+        const double M = p.fluidMass;
+        const double g = std::sqrt(b.Ga[0] * b.Ga[0] + b.Ga[1] * b.Ga[1] + b.Ga[2] * b.Ga[2]);
+        std::array<double, 3> vf;
+        for (int i = 0; i < 3; ++i)
+            vf[std::size_t(i)] = b.ga[std::size_t(i)] + b.u * b.Ga[std::size_t(i)];
+        const double v2 = vf[0] * vf[0] + vf[1] * vf[1] + vf[2] * vf[2];
+        const std::array<double, 3> I{p.torsionalInertia, p.bendingInertia, p.bendingInertia};
+        const std::array<double, 3> J{p.torsionalStiffness, p.bendingStiffness, p.bendingStiffness};
+        const std::array<double, 3> L{p.axialStiffness, p.shearStiffness, p.shearStiffness};
+        std::array<double, 16> r{};
+        for (int i = 0; i < 3; ++i)
+        {
+            const std::size_t j = std::size_t(i);
+            r[j] = I[j] * b.om[j];
+            r[3 + j] = p.wallMass * b.ga[j] + M * g * vf[j];
+            r[6 + j] = -J[j] * (b.Om[j] - w[j]);
+            r[9 + j] = -L[j] * (b.Ga[j] - (i == 0)) + M * g * b.u * vf[j] + (0.5 * M * v2 - b.amu) * b.Ga[j] / g;
+        }
+        const double am = M * (b.Ga[0] * vf[0] + b.Ga[1] * vf[1] + b.Ga[2] * vf[2]);
+        r[12] = am;
+        r[13] = g;
+        r[14] = am * b.u - b.amu;
+        r[15] = g * b.u;
+        return r;
+    }
+    //! the residuals of tube.md 1.4: angular (3), linear (3), fluid momentum, fluid mass
+    std::array<double, 8> residual(double s, double t) const
+    {
+        const Body b = body(s, t);
+        const auto st = stresses(s, t);
+        const auto sT = d4([&](double tt) { return stresses(s, tt); }, t, hOut);
+        const auto sS = d4([&](double ss) { return stresses(ss, t); }, s, hOut);
+        auto part = [](const std::array<double, 16>& a, int first)
+        { return std::array<double, 3>{a[std::size_t(first)], a[std::size_t(first + 1)], a[std::size_t(first + 2)]}; };
+        const auto pi = part(st, 0), P = part(st, 3), Mm = part(st, 6), F = part(st, 9);
+        const auto a1 = cross(b.om, pi), a2 = cross(b.ga, P), a3 = cross(b.Om, Mm), a4 = cross(b.Ga, F);
+        const auto l1 = cross(b.om, P), l2 = cross(b.Om, F);
+        std::array<double, 8> r{};
+        for (int i = 0; i < 3; ++i)
+        {
+            const std::size_t j = std::size_t(i);
+            r[j] = sT[j] + a1[j] + a2[j] + sS[6 + j] + a3[j] + a4[j];
+            r[3 + j] = sT[3 + j] + l1[j] + sS[9 + j] + l2[j];
+        }
+        r[6] = sT[12] + sS[14];
+        r[7] = sT[13] + sS[15];
+        return r;
+    }
+};
+
+TEST(TubeHelixLinearisation, MatchesTheNonlinearEquations)
+{
+    for (double u : {0.0, 2.0})
+    {
+        NonlinearTube tube;
+        tube.p = HelixParameters::dimensionless(0.3, u, 5.0); // L/r_g = 5: all terms of comparable size
+        tube.p.helixK = 0.8;
+        tube.p.helixAngle = 0.6;
+        tube.p.mu0 = tube.p.equilibriumMu0();
+        tube.w = tube.p.curvature();
+        tube.k = 1.7;
+        tube.omega = 2.3; // any omega and x: the linear operator itself is compared, not only its kernel
+        tube.x = {{0.3, -0.2}, {-0.5, 0.1}, {0.2, 0.7}, {0.4, 0.4}, {-0.3, 0.2}, {0.1, -0.6}, {0.5, 0.3}, {-0.2, 0.8}};
+        const HelixPencil pc = helixPencil(tube.p, tube.k);
+        double worst = 0.0, size = 0.0;
+        for (double s : {0.3, 1.1})
+            for (double t : {0.2, 0.9})
+            {
+                tube.eps = 1e-3;
+                const auto plus = tube.residual(s, t);
+                tube.eps = -1e-3;
+                const auto minus = tube.residual(s, t);
+                const cd phase = std::exp(cd(0.0, tube.omega * t - tube.k * s));
+                for (int i = 0; i < 8; ++i)
+                {
+                    cd lin = 0.0;
+                    for (int j = 0; j < 8; ++j)
+                        lin += (pc(0, i, j) + tube.omega * pc(1, i, j) + tube.omega * tube.omega * pc(2, i, j)) *
+                               tube.x[std::size_t(j)];
+                    const double predicted = (lin * phase).real(), measured = (plus[i] - minus[i]) / 2e-3;
+                    worst = std::max(worst, std::abs(predicted - measured));
+                    size = std::max(size, std::abs(predicted));
+                }
+            }
+        EXPECT_GT(size, 1.0);
+        EXPECT_LT(worst, 1e-5 * size) << "u " << u << " worst " << worst << " of " << size;
+    }
 }
 
 } // namespace
