@@ -45,6 +45,7 @@ RodConstants rodConstants(const PhysicalTube& p, const DynamicsSettings& d)
     c.wallMass = p.wallDensity * areaWall;
     c.wallRotary = p.wallDensity * inertia;
     c.fluidMass = p.fluidMassPerLength();
+    c.fluidArea = kPi * p.innerRadius * p.innerRadius;
     c.gravity = d.gravity;
     return c;
 }
