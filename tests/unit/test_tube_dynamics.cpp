@@ -1,0 +1,266 @@
+// The nonlinear tube (src/tube/TubeDynamics.cpp, kernels/unilag/TubeRod.hpp): exact gradients against finite
+// differences, cantilever bending frequencies against Euler-Bernoulli, energy and orthogonality over 1e5 steps,
+// momenta of a free-free tube, and flutter at beta = 0.2 against the linear stability (LinearStability).
+// Units: L = 1, EI = 1, M + m = 1 (time in L^2 sqrt((M + m)/EI)). Measured figures: docs/tube-dynamics.md.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <random>
+#include <vector>
+
+#include "tube/LinearStability.hpp"
+#include "tube/TubeDynamics.hpp"
+
+namespace
+{
+
+using namespace unilag::tube;
+using Vec = std::array<double, 3>;
+using Frame = std::array<double, 9>;
+
+Frame expFrame(const Vec& th) // Rodrigues, row-major
+{
+    const double t = std::sqrt(th[0] * th[0] + th[1] * th[1] + th[2] * th[2]);
+    const double a = std::sin(t) / t, b = (1 - std::cos(t)) / (t * t);
+    const double K[9] = {0, -th[2], th[1], th[2], 0, -th[0], -th[1], th[0], 0};
+    Frame r{};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+        {
+            double k2 = 0;
+            for (int l = 0; l < 3; ++l)
+                k2 += K[3 * i + l] * K[3 * l + j];
+            r[3 * i + j] = (i == j) + a * K[3 * i + j] + b * k2;
+        }
+    return r;
+}
+
+Frame times(const Frame& x, const Frame& y)
+{
+    Frame r{};
+    for (int i = 0; i < 3; ++i)
+        for (int j = 0; j < 3; ++j)
+            for (int l = 0; l < 3; ++l)
+                r[3 * i + j] += x[3 * i + l] * y[3 * l + j];
+    return r;
+}
+
+Frame perturbed(const Frame& f, int axis, double eps) // f exp(eps e_axis^)
+{
+    Vec th{0, 0, 0};
+    th[axis] = eps;
+    return times(f, expFrame(th));
+}
+
+RodConstants unitTube(double lambdaSq)
+{
+    // Shear and rotary-inertia corrections to the Euler-Bernoulli frequency ~ lambda^2 EI/(2 kGA) and
+    // lambda^2 rho I/2 (relative): 2.5e-4 each at this scaling.
+    RodConstants c;
+    c.bending = 1.0;
+    c.torsion = 1.0 / 1.3;
+    c.extension = c.shear = lambdaSq / 5e-4;
+    c.wallRotary = 5e-4 / lambdaSq;
+    c.wallMass = 0.8;
+    c.fluidMass = 0.2;
+    return c;
+}
+
+double cantileverMode(double lambda, double s)
+{
+    const double sigma = (std::sinh(lambda) - std::sin(lambda)) / (std::cosh(lambda) + std::cos(lambda));
+    return std::cosh(lambda * s) - std::cos(lambda * s) - sigma * (std::sinh(lambda * s) - std::sin(lambda * s));
+}
+
+double modeSlope(double lambda, double s)
+{
+    const double sigma = (std::sinh(lambda) - std::sin(lambda)) / (std::cosh(lambda) + std::cos(lambda));
+    return lambda * (std::sinh(lambda * s) + std::sin(lambda * s) - sigma * (std::cosh(lambda * s) - std::cos(lambda * s)));
+}
+
+//! Times where the series crosses zero (linear interpolation between samples).
+std::vector<double> zeroCrossings(const std::vector<double>& t, const std::vector<double>& y)
+{
+    std::vector<double> z;
+    for (std::size_t k = 1; k < y.size(); ++k)
+        if ((y[k - 1] < 0) != (y[k] < 0))
+            z.push_back(t[k - 1] + (t[k] - t[k - 1]) * y[k - 1] / (y[k - 1] - y[k]));
+    return z;
+}
+
+//! Angular frequency from equally spaced zero crossings (least-squares slope = half period).
+double frequencyFromCrossings(const std::vector<double>& z)
+{
+    const int n = static_cast<int>(z.size());
+    double sk = 0, st = 0, skk = 0, skt = 0;
+    for (int k = 0; k < n; ++k)
+    {
+        sk += k;
+        st += z[k];
+        skk += double(k) * k;
+        skt += k * z[k];
+    }
+    const double halfPeriod = (n * skt - sk * st) / (n * skk - sk * sk);
+    return M_PI / halfPeriod;
+}
+
+//! The cantilever's mode `lambda` (modal coordinate: the y displacement projected on the mode shape).
+double measuredFrequency(double lambda, int segments, double periods)
+{
+    RodSetup setup;
+    setup.segments = segments;
+    TubeDynamics tube(unitTube(lambda * lambda), setup);
+    const double amp = 1e-4;
+    tube.displace([&](double s) { return Vec{0, amp * cantileverMode(lambda, s) / cantileverMode(lambda, 1), 0}; });
+    const double period = 2 * M_PI / (lambda * lambda);
+    const double dt = tube.stableStep();
+    const int sampleEvery = std::max(1, int(period / (100 * dt)));
+    const int steps = int(periods * period / dt);
+    std::vector<double> t, q;
+    const double h = tube.spacing();
+    for (int k = 0; k <= steps; k += sampleEvery)
+    {
+        const RodFields f = tube.fields();
+        double proj = 0;
+        for (int j = 0; j < tube.nodes(); ++j)
+            proj += (j == 0 || j == tube.nodes() - 1 ? 0.5 : 1.0) * f.position[3 * j + 1] * cantileverMode(lambda, j * h);
+        t.push_back(tube.time());
+        q.push_back(proj);
+        tube.run(dt, sampleEvery);
+    }
+    EXPECT_TRUE(tube.finite());
+    return frequencyFromCrossings(zeroCrossings(t, q));
+}
+
+TEST(TubeDynamicsGradient, ForcesAndTorquesAreExactGradients)
+{
+    RodConstants c;
+    c.extension = 3.0;
+    c.shear = 2.0;
+    c.bending = 0.7;
+    c.torsion = 0.5;
+    c.restCurvature = {0.3, -0.2, 0.5};
+    const double h = 0.1;
+    std::mt19937 gen(7);
+    std::uniform_real_distribution<double> U(-1, 1);
+    for (int trial = 0; trial < 5; ++trial)
+    {
+        const Frame A = expFrame({U(gen), U(gen), U(gen)});
+        const Frame B = times(A, expFrame({0.3 * U(gen), 0.3 * U(gen), 0.3 * U(gen)}));
+        const Vec ra{U(gen), U(gen), U(gen)};
+        Vec rb = ra;
+        for (int a = 0; a < 3; ++a)
+            rb[a] += h * (A[3 * a] + 0.2 * U(gen)); // along A's axis 1, stretched and sheared
+        const SegmentGradient g = segmentGradient(c, h, A, B, ra, rb);
+        const double eps = 1e-6;
+        double scale = 0;
+        for (int a = 0; a < 3; ++a)
+            scale = std::max({scale, std::abs(g.forceOnLeft[a]), std::abs(g.torqueLeft[a]), std::abs(g.torqueRight[a])});
+        for (int a = 0; a < 3; ++a)
+        {
+            Vec p = rb, m = rb;
+            p[a] += eps;
+            m[a] -= eps;
+            const double dVdrb = (segmentGradient(c, h, A, B, ra, p).energy - segmentGradient(c, h, A, B, ra, m).energy) / (2 * eps);
+            EXPECT_NEAR(dVdrb, g.forceOnLeft[a], 1e-6 * scale) << "dV/dr_{j+1}, axis " << a;
+            p = ra;
+            m = ra;
+            p[a] += eps;
+            m[a] -= eps;
+            const double dVdra = (segmentGradient(c, h, A, B, p, rb).energy - segmentGradient(c, h, A, B, m, rb).energy) / (2 * eps);
+            EXPECT_NEAR(dVdra, -g.forceOnLeft[a], 1e-6 * scale) << "dV/dr_j, axis " << a;
+            const double dVdA = (segmentGradient(c, h, perturbed(A, a, eps), B, ra, rb).energy -
+                                 segmentGradient(c, h, perturbed(A, a, -eps), B, ra, rb).energy) / (2 * eps);
+            EXPECT_NEAR(-dVdA, g.torqueLeft[a], 1e-6 * scale) << "torque on node j, axis " << a;
+            const double dVdB = (segmentGradient(c, h, A, perturbed(B, a, eps), ra, rb).energy -
+                                 segmentGradient(c, h, A, perturbed(B, a, -eps), ra, rb).energy) / (2 * eps);
+            EXPECT_NEAR(-dVdB, g.torqueRight[a], 1e-6 * scale) << "torque on node j+1, axis " << a;
+        }
+    }
+}
+
+TEST(TubeDynamicsModes, CantileverFrequenciesMatchEulerBernoulli)
+{
+    const double lambdas[3] = {1.8751040687, 4.6940911330, 7.8547574382};
+    const int segments[3] = {40, 60, 80};
+    for (int k = 0; k < 3; ++k)
+    {
+        const double exact = lambdas[k] * lambdas[k];
+        const double measured = measuredFrequency(lambdas[k], segments[k], 2.5);
+        std::printf("mode %d: N = %d, omega = %.6f, Euler-Bernoulli %.6f, relative %.2e\n", k + 1, segments[k],
+                    measured, exact, measured / exact - 1);
+        EXPECT_NEAR(measured / exact, 1.0, 5e-3) << "mode " << k + 1;
+    }
+}
+
+TEST(TubeDynamicsConservation, EnergyAndOrthogonalityOver1e5Steps)
+{
+    RodSetup setup;
+    setup.segments = 20;
+    TubeDynamics tube(unitTube(1.8751 * 1.8751), setup);
+    // Started straight with the first mode's velocity and the matching spins (the tangent turns, no shear
+    // rate), so the stiff axial and shear modes stay quiet and the energy error is the bending mode's.
+    const double ay = 0.05, az = 0.02, lambda = 1.8751;
+    tube.setVelocity([&](double s) { return Vec{0, ay * cantileverMode(lambda, s), az * cantileverMode(lambda, s)}; });
+    tube.setSpin([&](double s) { return Vec{0, -az * modeSlope(lambda, s), ay * modeSlope(lambda, s)}; });
+    const double dt = tube.stableStep(), e0 = tube.energy();
+    double worst = 0, firstMean = 0, lastMean = 0;
+    const int blocks = 100, perBlock = 1000;
+    for (int b = 0; b < blocks; ++b)
+    {
+        tube.run(dt, perBlock);
+        const double err = tube.energy() / e0 - 1;
+        worst = std::max(worst, std::abs(err));
+        if (b < 10)
+            firstMean += err / 10;
+        if (b >= blocks - 10)
+            lastMean += err / 10;
+    }
+    std::printf("1e5 steps, dt = %.3e: max |dE/E| = %.2e, drift (last - first 10%%) = %.2e, defect = %.2e\n", dt,
+                worst, lastMean - firstMean, tube.orthogonalityDefect());
+    EXPECT_LT(worst, 1e-5);
+    EXPECT_LT(std::abs(lastMean - firstMean), 1e-6);
+    EXPECT_LT(tube.orthogonalityDefect(), 1e-13);
+}
+
+double relativeChange(const Vec& a, const Vec& b)
+{
+    return std::sqrt((a[0] - b[0]) * (a[0] - b[0]) + (a[1] - b[1]) * (a[1] - b[1]) + (a[2] - b[2]) * (a[2] - b[2])) /
+           std::sqrt(a[0] * a[0] + a[1] * a[1] + a[2] * a[2]);
+}
+
+TEST(TubeDynamicsConservation, FreeFreeMomentaAndRestHelix)
+{
+    RodConstants c = unitTube(10.0);
+    c.restCurvature = {1.0, 2.0, -1.0};
+    RodSetup setup;
+    setup.segments = 30;
+    setup.left = setup.right = EndCondition::Free;
+    TubeDynamics tube(c, setup);
+    EXPECT_LT(tube.energy(), 1e-20) << "the rest helix is stress free";
+    std::mt19937 gen(3);
+    std::uniform_real_distribution<double> U(-1, 1);
+    std::vector<Vec> v(tube.nodes()), w(tube.nodes());
+    for (int j = 0; j < tube.nodes(); ++j)
+    {
+        v[j] = {0.1 * U(gen), 0.1 * U(gen), 0.1 * U(gen)};
+        w[j] = {2 * U(gen), 2 * U(gen), 2 * U(gen)};
+    }
+    const double h = tube.spacing();
+    tube.setVelocity([&](double s) { return v[std::lround(s / h)]; });
+    tube.setSpin([&](double s) { return w[std::lround(s / h)]; });
+    const Vec p0 = tube.linearMomentum(), l0 = tube.angularMomentum();
+    const double e0 = tube.energy();
+    tube.run(tube.stableStep(), 20000);
+    const double dp = relativeChange(p0, tube.linearMomentum()), dl = relativeChange(l0, tube.angularMomentum());
+    std::printf("free-free, 2e4 steps: |dP|/|P| = %.2e, |dL|/|L| = %.2e, dE/E = %.2e, defect = %.2e\n", dp, dl,
+                tube.energy() / e0 - 1, tube.orthogonalityDefect());
+    EXPECT_TRUE(tube.finite());
+    EXPECT_LT(dp, 1e-12);
+    EXPECT_LT(dl, 1e-12);
+    EXPECT_LT(tube.orthogonalityDefect(), 1e-13);
+}
+
+} // namespace
