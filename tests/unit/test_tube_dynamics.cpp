@@ -54,7 +54,7 @@ Frame perturbed(const Frame& f, int axis, double eps) // f exp(eps e_axis^)
     return times(f, expFrame(th));
 }
 
-RodConstants unitTube(double lambdaSq)
+RodConstants unitTube(double lambdaSq, double rotary = 0)
 {
     // Shear and rotary-inertia corrections to the Euler-Bernoulli frequency ~ lambda^2 EI/(2 kGA) and
     // lambda^2 rho I/2 (relative): 2.5e-4 each at this scaling.
@@ -62,7 +62,7 @@ RodConstants unitTube(double lambdaSq)
     c.bending = 1.0;
     c.torsion = 1.0 / 1.3;
     c.extension = c.shear = lambdaSq / 5e-4;
-    c.wallRotary = 5e-4 / lambdaSq;
+    c.wallRotary = rotary > 0 ? rotary : 5e-4 / lambdaSq;
     c.wallMass = 0.8;
     c.fluidMass = 0.2;
     return c;
@@ -261,6 +261,91 @@ TEST(TubeDynamicsConservation, FreeFreeMomentaAndRestHelix)
     EXPECT_LT(dp, 1e-12);
     EXPECT_LT(dl, 1e-12);
     EXPECT_LT(tube.orthogonalityDefect(), 1e-13);
+}
+
+//! Least-squares slope of log|y| at the series' extrema (parabola through the three samples around each) after tStart.
+double growthFromExtrema(const std::vector<double>& t, const std::vector<double>& y, double tStart)
+{
+    std::vector<double> tp, lp;
+    for (std::size_t k = 1; k + 1 < y.size(); ++k)
+    {
+        const double a = std::abs(y[k - 1]), b = std::abs(y[k]), c = std::abs(y[k + 1]);
+        if (t[k] < tStart || !(b >= a && b > c) || (y[k - 1] < 0) != (y[k + 1] < 0))
+            continue;
+        const double curv = a - 2 * b + c, shift = 0.5 * (a - c) / curv; // in samples
+        tp.push_back(t[k] + shift * (t[k + 1] - t[k]));
+        lp.push_back(std::log(b - 0.25 * (a - c) * shift));
+    }
+    const double n = double(tp.size());
+    double st = 0, sl = 0, stt = 0, stl = 0;
+    for (std::size_t k = 0; k < tp.size(); ++k)
+    {
+        st += tp[k];
+        sl += lp[k];
+        stt += tp[k] * tp[k];
+        stl += tp[k] * lp[k];
+    }
+    return (n * stl - st * sl) / (n * stt - st * st);
+}
+
+/*! Growth rate of the tip's transverse motion of the cantilever conveying fluid at beta = 0.2, flow speed
+ *  u = U L sqrt(M/EI), started from a small displacement in the second mode's shape. Units: L = EI = M + m = 1. */
+double measuredGrowth(double u, int segments, double stiffness, double rotary, double duration)
+{
+    RodConstants c = unitTube(stiffness, rotary);
+    RodSetup setup;
+    setup.segments = segments;
+    setup.flowSpeed = u / std::sqrt(c.fluidMass);
+    TubeDynamics tube(c, setup);
+    const double lambda = 4.6940911330;
+    tube.displace([&](double s) { return Vec{0, 1e-4 * cantileverMode(lambda, s) / cantileverMode(lambda, 1), 0}; });
+    const double dt = tube.stableStep(), sample = 0.46 / 60; // about 60 samples per flutter period
+    const int every = std::max(1, int(sample / dt));
+    std::vector<double> t, y;
+    while (tube.time() < duration)
+    {
+        t.push_back(tube.time());
+        y.push_back(tube.tip()[1]);
+        tube.run(dt, every);
+    }
+    EXPECT_TRUE(tube.finite());
+    return growthFromExtrema(t, y, 2.0);
+}
+
+double linearUcf()
+{
+    TubeDiscretisation d; // 40 elements, 16 modes: u_cf within 1e-5 of the converged one (test_tube_stability)
+    ScanOptions scan;
+    scan.speedMax = 10;
+    scan.speedStep = 0.05;
+    return criticalFlutterSpeed(d, 0.2, scan).speed;
+}
+
+TEST(TubeDynamicsFlow, CantileverFluttersAboveTheLinearCriticalSpeed)
+{
+    const double ucf = linearUcf();
+    // A cheap tube (N = 30, EA = kGA = 2e4, rho I = 1e-4): the accurate figures come from the test below.
+    const double below = measuredGrowth(0.98 * ucf, 30, 10.0, 1e-4, 5.0);
+    const double above = measuredGrowth(1.02 * ucf, 30, 10.0, 1e-4, 5.0);
+    const double linear = LinearStability(TubeDiscretisation{}, 0.2).growthRate(1.02 * ucf);
+    std::printf("beta 0.2, u_cf = %.5f, N = 30: growth at 0.98 u_cf %.4f, at 1.02 u_cf %.4f (linear %.4f, ratio %.3f)\n",
+                ucf, below, above, linear, above / linear);
+    EXPECT_LT(below, 0.0);
+    EXPECT_GT(above, 0.0);
+}
+
+// The accurate comparison (minutes): --gtest_also_run_disabled_tests --gtest_filter='*AccurateGrowth*'
+TEST(TubeDynamicsFlow, DISABLED_AccurateGrowthRate)
+{
+    const double ucf = linearUcf();
+    const double linear = LinearStability(TubeDiscretisation{}, 0.2).growthRate(1.02 * ucf);
+    for (int n : {40, 80})
+        for (double stiffness : {10.0, 100.0})
+        {
+            const double g = measuredGrowth(1.02 * ucf, n, stiffness, 0.0, 10.0);
+            std::printf("N = %d, EA = kGA = %.0f, rho I = %.1e: growth at 1.02 u_cf %.5f, linear %.5f, ratio %.4f\n",
+                        n, stiffness / 5e-4, 5e-4 / stiffness, g, linear, g / linear);
+        }
 }
 
 } // namespace
