@@ -263,12 +263,12 @@ struct NodeGather
     }
 };
 
-/*! Fluid pass over segments (plug flow at relative speed U, mass M per length): the chord tangent, the Coriolis
- *  impulse density c = M U (I - t t^T)(v_{j+1} - v_j) (half to each end node), and the segment's increment of
- *  p A from d_l(p A) = -M t.(a + U d_l v), the tube accelerations a taken from the elastic load. */
+/*! Fluid pass over segments (plug flow at relative speed U, mass M per length): the chord tangent and the
+ *  segment's increment of p A from d_l(p A) = -M t.(a + U d_l v), the tube accelerations a taken from the
+ *  elastic load. */
 struct FluidSegment
 {
-    Vec3View r, v, force, tangent, coriolis;
+    Vec3View r, v, force, tangent;
     ScalarView mass, pressureStep;
     double fluidMass, speed;
     int leftFlags, rightFlags, segments;
@@ -286,7 +286,6 @@ struct FluidSegment
         const V3 dv = loadV3(v, j + 1) - loadV3(v, j);
         const V3 acc = 0.5 * (acceleration(j) + acceleration(j + 1));
         storeV3(tangent, j, t);
-        storeV3(coriolis, j, (fluidMass * speed) * (dv - dot(t, dv) * t));
         pressureStep(j) = fluidMass * (len * dot(t, acc) + speed * dot(t, dv));
     }
 };
@@ -306,42 +305,61 @@ struct PressureScan
     }
 };
 
-/*! Fluid forces on nodes, finite-volume over each node's cell: -(M U^2 + p A)(t_j - t_{j-1}) (zero at the end
- *  nodes: the fluid enters and leaves along the end segment's tangent) and minus the Coriolis halves. */
+/*! Fluid forces on nodes, finite-volume over each node's cell, except Coriolis: -(M U^2 + p A)(t_j - t_{j-1}),
+ *  zero at the end nodes (the fluid enters and leaves along the end segment's tangent). */
 struct FluidGather
 {
-    Vec3View tangent, coriolis, force;
+    Vec3View tangent, force;
     ScalarView pressure;
     double centrifugal; // M U^2
     int segments;
     KOKKOS_INLINE_FUNCTION void operator()(int j) const
     {
+        if (j == 0 || j == segments)
+            return;
         const double tension = centrifugal + pressure(j);
         for (int a = 0; a < 3; ++a)
-        {
-            double f = 0.0;
-            if (j > 0 && j < segments)
-                f -= tension * (tangent(j, a) - tangent(j - 1, a));
-            if (j < segments)
-                f -= coriolis(j, a);
-            if (j > 0)
-                f -= coriolis(j - 1, a);
-            force(j, a) += f;
-        }
+            force(j, a) -= tension * (tangent(j, a) - tangent(j - 1, a));
     }
 };
 
-//! Kick after the fluid pass: the stored load (elastic, gravity, fluid) applied.
-struct Kick
+/*! The kick with the fluid's Coriolis force -2 M U (I - t t^T) d_l v, per node cell
+ *  -M U [P_{j-1}(v_j - v_{j-1}) + P_j(v_{j+1} - v_j)], P = I - t t^T, taken at the kick's midpoint velocity
+ *  (v_old + v_new)/2 (Crank-Nicolson: the skew gyroscopic operator then does no spurious work; a lagged explicit
+ *  velocity makes the short waves grow at a rate proportional to dt). Solved by fixed-point sweeps (Jacobi,
+ *  contraction tau M U/(m h) ~ 1e-2): sweep 0 takes v_old (explicit predictor), later sweeps the previous sweep's
+ *  v_new. The last sweep also kicks the spins. */
+struct CoriolisKick
 {
-    Vec3View force, torque, velocity, spin;
+    Vec3View force, torque, tangent, vOld, vIn, vOut, spin;
     ScalarView mass;
+    double coriolis; // M U
     int leftFlags, rightFlags, segments;
     double tau;
+    bool predictor, last;
+    KOKKOS_INLINE_FUNCTION V3 midVelocity(int k) const
+    {
+        return predictor ? loadV3(vOld, k) : 0.5 * (loadV3(vOld, k) + loadV3(vIn, k));
+    }
+    KOKKOS_INLINE_FUNCTION V3 projectedJump(int seg, const V3& dv) const // (I - t t^T) dv
+    {
+        const V3 t = loadV3(tangent, seg);
+        return dv - dot(t, dv) * t;
+    }
     KOKKOS_INLINE_FUNCTION void operator()(int j) const
     {
         const int flags = j == 0 ? leftFlags : (j == segments ? rightFlags : 0);
-        kickNode(j, flags, tau, loadV3(force, j), loadV3(torque, j), mass, velocity, spin);
+        const V3 vj = midVelocity(j);
+        V3 f = loadV3(force, j);
+        if (j > 0)
+            f = f - coriolis * projectedJump(j - 1, vj - midVelocity(j - 1));
+        if (j < segments)
+            f = f - coriolis * projectedJump(j, midVelocity(j + 1) - vj);
+        const V3 v0 = loadV3(vOld, j);
+        storeV3(vOut, j, positionFixed(flags) ? v0 : v0 + (tau / mass(j)) * f);
+        if (last && !rotationFixed(flags))
+            for (int a = 0; a < 3; ++a)
+                spin(j, a) += tau * torque(j, a);
     }
 };
 

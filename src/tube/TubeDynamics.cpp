@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <cmath>
 #include <stdexcept>
+#include <utility>
 
 #include "unilag/TubeRod.hpp"
 
@@ -100,7 +101,7 @@ struct TubeDynamics::State
     Vec3View r, v, spin, force, torque;
     Mat3View lam;
     ScalarView mass, rotary;
-    Vec3View segForce, segTorqueLeft, segTorqueRight, tangent, coriolis;
+    Vec3View segForce, segTorqueLeft, segTorqueRight, tangent, vA, vB; // vA, vB: Coriolis sweeps
     ScalarView pressureStep, pressure;
 
     int flags(int j) const { return j == 0 ? leftFlags : (j == n ? rightFlags : 0); }
@@ -138,7 +139,8 @@ TubeDynamics::TubeDynamics(const RodConstants& constants, const RodSetup& setup)
     s.segTorqueLeft = Vec3View("tube segment torque left", s.n);
     s.segTorqueRight = Vec3View("tube segment torque right", s.n);
     s.tangent = Vec3View("tube tangent", s.n);
-    s.coriolis = Vec3View("tube coriolis", s.n);
+    s.vA = Vec3View("tube v sweep A", nn);
+    s.vB = Vec3View("tube v sweep B", nn);
     s.pressureStep = ScalarView("tube dpA", s.n);
     s.pressure = ScalarView("tube pA", nn);
 
@@ -275,18 +277,28 @@ void TubeDynamics::kick(double tau)
     Kokkos::parallel_for("tube node gather", Kokkos::RangePolicy<ExecSpace>(0, s.n + 1), gather);
     if (!flow)
         return;
-    // The fluid's Coriolis force takes the velocity at the kick's start (explicit); the pressure takes the
-    // accelerations of the elastic load just stored.
+    // The pressure takes the accelerations of the elastic load just stored and the velocities at the kick's
+    // start; the Coriolis force the midpoint velocity, by three Jacobi sweeps (predictor, two corrections).
     const double U = s.setup.flowSpeed, M = s.c.fluidMass;
+    const auto nodes = Kokkos::RangePolicy<ExecSpace>(0, s.n + 1);
     Kokkos::parallel_for("tube fluid segments", Kokkos::RangePolicy<ExecSpace>(0, s.n),
-                         FluidSegment{s.r, s.v, s.force, s.tangent, s.coriolis, s.mass, s.pressureStep, M, U,
-                                      s.leftFlags, s.rightFlags, s.n});
+                         FluidSegment{s.r, s.v, s.force, s.tangent, s.mass, s.pressureStep, M, U, s.leftFlags,
+                                      s.rightFlags, s.n});
     Kokkos::parallel_scan("tube pressure", Kokkos::RangePolicy<ExecSpace>(0, s.n),
                           PressureScan{s.pressureStep, s.pressure, s.n});
-    Kokkos::parallel_for("tube fluid gather", Kokkos::RangePolicy<ExecSpace>(0, s.n + 1),
-                         FluidGather{s.tangent, s.coriolis, s.force, s.pressure, M * U * U, s.n});
-    Kokkos::parallel_for("tube kick", Kokkos::RangePolicy<ExecSpace>(0, s.n + 1),
-                         Kick{s.force, s.torque, s.v, s.spin, s.mass, s.leftFlags, s.rightFlags, s.n, tau});
+    Kokkos::parallel_for("tube fluid gather", nodes, FluidGather{s.tangent, s.force, s.pressure, M * U * U, s.n});
+    CoriolisKick sweep{s.force, s.torque, s.tangent, s.v, s.vB, s.vA, s.spin, s.mass, M * U,
+                       s.leftFlags, s.rightFlags, s.n, tau, true, false};
+    Kokkos::parallel_for("tube coriolis predictor", nodes, sweep); // v -> vA
+    sweep.predictor = false;
+    sweep.vIn = s.vA;
+    sweep.vOut = s.vB;
+    Kokkos::parallel_for("tube coriolis sweep", nodes, sweep); // vA -> vB
+    sweep.vIn = s.vB;
+    sweep.vOut = s.vA;
+    sweep.last = true;
+    Kokkos::parallel_for("tube coriolis kick", nodes, sweep); // vB -> vA, spins kicked
+    std::swap(s.v, s.vA);
 }
 
 void TubeDynamics::drift(double tau)
