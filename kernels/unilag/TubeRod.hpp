@@ -305,25 +305,9 @@ struct PressureScan
     }
 };
 
-/*! Fluid forces on nodes, finite-volume over each node's cell, except Coriolis: -(M U^2 + p A)(t_j - t_{j-1}),
- *  zero at the end nodes (the fluid enters and leaves along the end segment's tangent). */
-struct FluidGather
-{
-    Vec3View tangent, force;
-    ScalarView pressure;
-    double centrifugal; // M U^2
-    int segments;
-    KOKKOS_INLINE_FUNCTION void operator()(int j) const
-    {
-        if (j == 0 || j == segments)
-            return;
-        const double tension = centrifugal + pressure(j);
-        for (int a = 0; a < 3; ++a)
-            force(j, a) -= tension * (tangent(j, a) - tangent(j - 1, a));
-    }
-};
-
-/*! The kick with the fluid's Coriolis force -2 M U (I - t t^T) d_l v, per node cell
+/*! The kick with the fluid's forces, finite volume over each node's cell: the centrifugal and pressure force
+ *  -(M U^2 + p A)(t_j - t_{j-1}), zero at the end nodes (the fluid enters and leaves along the end segment's
+ *  tangent), and the Coriolis force -2 M U (I - t t^T) d_l v, per node cell
  *  -M U [P_{j-1}(v_j - v_{j-1}) + P_j(v_{j+1} - v_j)], P = I - t t^T, taken at the kick's midpoint velocity
  *  (v_old + v_new)/2 (Crank-Nicolson: the skew gyroscopic operator then does no spurious work; a lagged explicit
  *  velocity makes the short waves grow at a rate proportional to dt). Solved by fixed-point sweeps (Jacobi,
@@ -332,8 +316,8 @@ struct FluidGather
 struct CoriolisKick
 {
     Vec3View force, torque, tangent, vOld, vIn, vOut, spin;
-    ScalarView mass;
-    double coriolis; // M U
+    ScalarView mass, pressure;
+    double centrifugal, coriolis; // M U^2, M U
     int leftFlags, rightFlags, segments;
     double tau;
     bool predictor, last;
@@ -351,6 +335,8 @@ struct CoriolisKick
         const int flags = j == 0 ? leftFlags : (j == segments ? rightFlags : 0);
         const V3 vj = midVelocity(j);
         V3 f = loadV3(force, j);
+        if (j > 0 && j < segments)
+            f = f - (centrifugal + pressure(j)) * (loadV3(tangent, j) - loadV3(tangent, j - 1));
         if (j > 0)
             f = f - coriolis * projectedJump(j - 1, vj - midVelocity(j - 1));
         if (j < segments)

@@ -286,8 +286,7 @@ void TubeDynamics::kick(double tau)
                                       s.rightFlags, s.n});
     Kokkos::parallel_scan("tube pressure", Kokkos::RangePolicy<ExecSpace>(0, s.n),
                           PressureScan{s.pressureStep, s.pressure, s.n});
-    Kokkos::parallel_for("tube fluid gather", nodes, FluidGather{s.tangent, s.force, s.pressure, M * U * U, s.n});
-    CoriolisKick sweep{s.force, s.torque, s.tangent, s.v, s.vB, s.vA, s.spin, s.mass, M * U,
+    CoriolisKick sweep{s.force, s.torque, s.tangent, s.v, s.vB, s.vA, s.spin, s.mass, s.pressure, M * U * U, M * U,
                        s.leftFlags, s.rightFlags, s.n, tau, true, false};
     Kokkos::parallel_for("tube coriolis predictor", nodes, sweep); // v -> vA
     sweep.predictor = false;
