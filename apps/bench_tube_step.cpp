@@ -1,5 +1,6 @@
 // Throughput of the nonlinear tube's step (src/tube/TubeDynamics.cpp): node-steps per second of a cantilever
-// conveying fluid, without and with flow, one line per run. Threads from OMP_NUM_THREADS (OpenMP backend).
+// conveying fluid, without and with flow, on the default execution space (threads from OMP_NUM_THREADS on the
+// OpenMP backend) and on Kokkos::Serial (RodSetup::serialBelow), one line per run.
 //   OMP_NUM_THREADS=1 build/release/apps/bench_tube_step [segments=200] [steps=4000]
 #include <Kokkos_Core.hpp>
 
@@ -18,7 +19,7 @@ using unilag::tube::RodSetup;
 using unilag::tube::TubeDynamics;
 
 //! Seconds for `steps` steps of a tube (L = EI = M + m = 1, beta = 0.2) started from a small tip deflection.
-double timeSteps(int segments, int steps, double flowSpeed)
+double timeSteps(int segments, int steps, double flowSpeed, bool serial)
 {
     RodConstants c;
     c.bending = 1.0;
@@ -30,6 +31,7 @@ double timeSteps(int segments, int steps, double flowSpeed)
     RodSetup setup;
     setup.segments = segments;
     setup.flowSpeed = flowSpeed;
+    setup.serialBelow = serial ? segments + 2 : 0; // the measurement chooses, not the size
     TubeDynamics tube(c, setup);
     tube.displace([](double s) { return std::array<double, 3>{0, 1e-3 * s * s, 0}; });
     const double dt = tube.stableStep();
@@ -50,11 +52,14 @@ int main(int argc, char* argv[])
     const int segments = argc > 1 ? std::atoi(argv[1]) : 200;
     const int steps = argc > 2 ? std::atoi(argv[2]) : 4000;
     const int threads = Kokkos::DefaultExecutionSpace::concurrency();
-    for (double u : {0.0, 5.6})
-    {
-        const double seconds = timeSteps(segments, steps, u / std::sqrt(0.2));
-        std::printf("bench_tube_step threads=%d segments=%d steps=%d flow_u=%.1f seconds=%.4f node_steps_per_s=%.4e\n",
-                    threads, segments, steps, u, seconds, double(segments + 1) * steps / seconds);
-    }
+    for (bool serial : {false, true})
+        for (double u : {0.0, 5.6})
+        {
+            const double seconds = timeSteps(segments, steps, u / std::sqrt(0.2), serial);
+            std::printf("bench_tube_step threads=%d space=%s segments=%d steps=%d flow_u=%.1f seconds=%.4f "
+                        "node_steps_per_s=%.4e\n",
+                        serial ? 1 : threads, serial ? "Serial" : "default", segments, steps, u, seconds,
+                        double(segments + 1) * steps / seconds);
+        }
     return 0;
 }

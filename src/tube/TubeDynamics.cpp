@@ -29,6 +29,37 @@ int endFlags(EndCondition e)
     return 0;
 }
 
+//! parallel_for on the default execution space, or on Kokkos::Serial (small rods, host backends).
+template <class Functor>
+void forEach(const char* name, int n, bool serial, const Functor& f)
+{
+#if defined(KOKKOS_ENABLE_SERIAL)
+    if constexpr (Kokkos::SpaceAccessibility<Kokkos::Serial, MemSpace>::accessible)
+        if (serial)
+        {
+            Kokkos::parallel_for(name, Kokkos::RangePolicy<Kokkos::Serial>(0, n), f);
+            return;
+        }
+#endif
+    (void)serial;
+    Kokkos::parallel_for(name, Kokkos::RangePolicy<ExecSpace>(0, n), f);
+}
+
+template <class Functor>
+void scan(const char* name, int n, bool serial, const Functor& f)
+{
+#if defined(KOKKOS_ENABLE_SERIAL)
+    if constexpr (Kokkos::SpaceAccessibility<Kokkos::Serial, MemSpace>::accessible)
+        if (serial)
+        {
+            Kokkos::parallel_scan(name, Kokkos::RangePolicy<Kokkos::Serial>(0, n), f);
+            return;
+        }
+#endif
+    (void)serial;
+    Kokkos::parallel_scan(name, Kokkos::RangePolicy<ExecSpace>(0, n), f);
+}
+
 RodParams rodParams(const RodConstants& c, double h)
 {
     RodParams p;
@@ -98,6 +129,7 @@ struct TubeDynamics::State
     int n = 0; // segments
     double t = 0.0;
     int leftFlags = 0, rightFlags = 0;
+    bool serial = false; // kernels on Kokkos::Serial (RodSetup::serialBelow)
     Vec3View r, v, spin, force, torque;
     Mat3View lam;
     ScalarView mass, rotary;
@@ -127,6 +159,7 @@ TubeDynamics::TubeDynamics(const RodConstants& constants, const RodSetup& setup)
     s.p = rodParams(constants, h);
     s.leftFlags = endFlags(setup.left);
     s.rightFlags = endFlags(setup.right);
+    s.serial = nn < setup.serialBelow;
     s.r = Vec3View("tube r", nn);
     s.v = Vec3View("tube v", nn);
     s.spin = Vec3View("tube pi", nn);
@@ -268,43 +301,40 @@ void TubeDynamics::kick(double tau)
 {
     State& s = *s_;
     const bool flow = s.flowing();
-    Kokkos::parallel_for("tube segment stress", Kokkos::RangePolicy<ExecSpace>(0, s.n),
-                         SegmentStress{s.lam, s.r, s.segForce, s.segTorqueLeft, s.segTorqueRight, s.p});
+    forEach("tube segment stress", s.n, s.serial,
+            SegmentStress{s.lam, s.r, s.segForce, s.segTorqueLeft, s.segTorqueRight, s.p});
     NodeGather gather{s.segForce, s.segTorqueLeft, s.segTorqueRight, s.force, s.torque, s.v, s.spin, s.mass,
                       {0, 0, 0}, s.leftFlags, s.rightFlags, s.n, tau, !flow};
     for (int a = 0; a < 3; ++a)
         gather.gravity[a] = s.c.gravity[a];
-    Kokkos::parallel_for("tube node gather", Kokkos::RangePolicy<ExecSpace>(0, s.n + 1), gather);
+    forEach("tube node gather", s.n + 1, s.serial, gather);
     if (!flow)
         return;
     // The pressure takes the accelerations of the elastic load just stored and the velocities at the kick's
     // start; the Coriolis force the midpoint velocity, by three Jacobi sweeps (predictor, two corrections).
     const double U = s.setup.flowSpeed, M = s.c.fluidMass;
-    const auto nodes = Kokkos::RangePolicy<ExecSpace>(0, s.n + 1);
-    Kokkos::parallel_for("tube fluid segments", Kokkos::RangePolicy<ExecSpace>(0, s.n),
-                         FluidSegment{s.r, s.v, s.force, s.tangent, s.mass, s.pressureStep, M, U, s.leftFlags,
-                                      s.rightFlags, s.n});
-    Kokkos::parallel_scan("tube pressure", Kokkos::RangePolicy<ExecSpace>(0, s.n),
-                          PressureScan{s.pressureStep, s.pressure, s.n});
+    forEach("tube fluid segments", s.n, s.serial,
+            FluidSegment{s.r, s.v, s.force, s.tangent, s.mass, s.pressureStep, M, U, s.leftFlags, s.rightFlags, s.n});
+    scan("tube pressure", s.n, s.serial, PressureScan{s.pressureStep, s.pressure, s.n});
     CoriolisKick sweep{s.force, s.torque, s.tangent, s.v, s.vB, s.vA, s.spin, s.mass, s.pressure, M * U * U, M * U,
                        s.leftFlags, s.rightFlags, s.n, tau, true, false};
-    Kokkos::parallel_for("tube coriolis predictor", nodes, sweep); // v -> vA
+    forEach("tube coriolis predictor", s.n + 1, s.serial, sweep); // v -> vA
     sweep.predictor = false;
     sweep.vIn = s.vA;
     sweep.vOut = s.vB;
-    Kokkos::parallel_for("tube coriolis sweep", nodes, sweep); // vA -> vB
+    forEach("tube coriolis sweep", s.n + 1, s.serial, sweep); // vA -> vB
     sweep.vIn = s.vB;
     sweep.vOut = s.vA;
     sweep.last = true;
-    Kokkos::parallel_for("tube coriolis kick", nodes, sweep); // vB -> vA, spins kicked
+    forEach("tube coriolis kick", s.n + 1, s.serial, sweep); // vB -> vA, spins kicked
     std::swap(s.v, s.vA);
 }
 
 void TubeDynamics::drift(double tau)
 {
     State& s = *s_;
-    Kokkos::parallel_for("tube drift", Kokkos::RangePolicy<ExecSpace>(0, s.n + 1),
-                         Drift{s.r, s.v, s.spin, s.lam, s.rotary, s.leftFlags, s.rightFlags, s.n, tau});
+    forEach("tube drift", s.n + 1, s.serial,
+            Drift{s.r, s.v, s.spin, s.lam, s.rotary, s.leftFlags, s.rightFlags, s.n, tau});
     s.t += tau;
 }
 

@@ -36,6 +36,10 @@ struct RodSetup
     int segments = 100;
     EndCondition left = EndCondition::Clamped, right = EndCondition::Free;
     double flowSpeed = 0; //!< U, the fluid's speed relative to the tube, along the tangent
+    /*! Rods with fewer nodes run their kernels on Kokkos::Serial when the backend is on the host: a step of a
+     *  small rod is tens of microseconds of work, less than the fork/join of its 3 (8 with flow) OpenMP launches,
+     *  and far less when the cores are oversubscribed. 0: always the default execution space. */
+    int serialBelow = 1024;
 };
 
 //! Host copies, per node: position (3), velocity (3), curvature |Omega| (1), fluid speed U (1),
