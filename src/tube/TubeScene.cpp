@@ -57,8 +57,8 @@ void readAreaChange(ConfigNode& t, TubeScene& s)
     if (!geometric)
         return;
     s.physical.areaChange = t.nonNegative("area_change", 0.0);
-    s.physical.areaPressure = t.option<AreaPressure>("area_change_pressure", "dynamic",
-                                                     {{"dynamic", AreaPressure::Dynamic}, {"static", AreaPressure::Static}});
+    s.physical.areaPressure = t.option<AreaPressure>(
+        "area_change_pressure", "dynamic", {{"dynamic", AreaPressure::Dynamic}, {"static", AreaPressure::Static}});
 }
 
 //! tube: the model and, optionally, the physical tube (then every physical key is required).

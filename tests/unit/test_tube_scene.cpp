@@ -156,7 +156,9 @@ TEST(TubeScene, GeometricBadInputNamesFileAndKey)
         {kGeometric, {"tube.area_change_pressure=total"}, "key 'tube.area_change_pressure': 'total' is not one of"},
         {kGeometric, {"stability.beta=[0.2]"}, "key 'stability.beta': the geometric model takes its mass ratio"},
         {kGeometric, {"tube.model=euler_bernoulli"}, "key 'tube.area_change': only the geometric model has"},
-        {kScene, {"tube.model=geometric", "stability.beta=[0.2]"}, "key 'tube.length': missing (the geometric model needs"},
+        {kScene,
+         {"tube.model=geometric", "stability.beta=[0.2]"},
+         "key 'tube.length': missing (the geometric model needs"},
     };
     for (const Case& c : cases)
     {
@@ -169,7 +171,8 @@ TEST(TubeRun, BadInputExitsTwoAndWritesNothing)
 {
     const fs::path out = scratch() / "bad";
     fs::remove_all(out);
-    EXPECT_EQ(unilag::runTube(kScene, {"stability.beta=[0.5,1.5]"}, out.string(), false, MPI_COMM_WORLD), unilag::ExitInput);
+    EXPECT_EQ(unilag::runTube(kScene, {"stability.beta=[0.5,1.5]"}, out.string(), false, MPI_COMM_WORLD),
+              unilag::ExitInput);
     EXPECT_FALSE(fs::exists(out));
 }
 
