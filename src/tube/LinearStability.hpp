@@ -80,7 +80,8 @@ class LinearStability
     std::vector<Mode> spectrum(double u) const;
     //! The `count` lowest modes of non-negative frequency at u (one of each conjugate pair), by frequency.
     std::vector<Mode> lowestModes(double u, int count) const;
-    //! The largest growth rate max Re(lambda) at u, over the modes below frequencyCutoff().
+    /*! The largest growth rate max Re(lambda) at u, over the modes below frequencyCutoff(). For the geometric model
+     *  it is 0 (round-off) below the onset: its axial modes are undamped. */
     double growthRate(double u) const;
     /*! The geometric model's thickness-shear cutoff 1 / sqrt(shear rotary) (inf for Euler-Bernoulli): the modes
      *  above it (Timoshenko's second spectrum) are left out of growthRate, unstable and firstInstability, because

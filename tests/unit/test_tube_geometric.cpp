@@ -168,6 +168,21 @@ TEST(TubeGeometric, AreaChangeStiffensWithTheDynamicPressure)
     EXPECT_NEAR(staticPressure, k0, 1e-9 * k0);
 }
 
+/*! The growth rate max Re(lambda) (units 1/tau) that the nonlinear runs compare with: positive above u_cf; below it
+ *  0 to round-off, because the axial modes are undamped (no fluid term acts on x), while the bending modes decay.
+ *  Measured (rubber tube, L/r_g = 100, 40 el., 24 modes; u_cf 8.406009): 1.181284 at 1.01 u_cf, 7.356647 at 1.1. */
+TEST(TubeGeometric, GrowthRateChangesSignAtOnset)
+{
+    const PhysicalTube p = rubberTube(100.0);
+    const LinearStability s(geometricDiscretisation(p), p.massRatio());
+    const double ucf = s.firstInstability(scanTo(12.0)).speed;
+    for (double u : {0.9 * ucf, 0.99 * ucf, 1.01 * ucf, 1.1 * ucf})
+        std::printf("u %.4f: growth %.6f\n", u, s.growthRate(u));
+    EXPECT_LT(s.growthRate(0.99 * ucf), 1e-9);
+    EXPECT_GT(s.growthRate(1.01 * ucf), 0.0);
+    EXPECT_GT(s.growthRate(1.1 * ucf), s.growthRate(1.01 * ucf));
+}
+
 //! The element's matrices: symmetric inertia and elastic energy; the elastic energy of a rigid motion vanishes.
 TEST(TubeGeometric, ElementMatricesAreConsistent)
 {
