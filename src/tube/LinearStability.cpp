@@ -50,6 +50,10 @@ GlobalMatrices assemble(const TubeElement& element, int elements)
     // K_f = (v', eta') - [v eta']_0^1: the weak form of -eta'' (docs/tube-model.md 2)
     scatterAdd(g.flow, element.endTerm(h, true), e.size, (elements - 1) * dpn, -1.0);
     scatterAdd(g.flow, element.endTerm(h, false), e.size, 0, +1.0);
+    // the area change stiffens psi'^2 by a u^2 term (docs/tube-model.md 7.3): it goes with the flow's u^2
+    if (!e.areaStiffening.empty())
+        for (int el = 0; el < elements; ++el)
+            scatterAdd(g.flow, e.areaStiffening, e.size, el * dpn, -1.0);
     return g;
 }
 
@@ -98,13 +102,16 @@ Mode leadingMode(const std::vector<Mode>& modes)
 
 LinearStability::LinearStability(const TubeDiscretisation& disc, double beta) : beta_(beta)
 {
-    const auto element = makeElement(disc.model);
+    const auto element = makeElement(disc.model, disc.geometric);
     const GlobalMatrices g = assemble(*element, disc.elements);
     const std::vector<int> dofs = freeDofs(*element, disc.elements, disc.left, disc.right);
     mass_ = restrictTo(g.inertia, dofs);
     bending_ = restrictTo(g.bending, dofs);
     flow_ = restrictTo(g.flow, dofs);
     coriolis_ = restrictTo(g.coriolis, dofs);
+    const GeometricParameters& geo = disc.geometric;
+    if (disc.model == TubeModel::Geometric && geo.shear > 0.0 && geo.rotary > 0.0)
+        frequencyCutoff_ = 1.0 / std::sqrt(geo.shear * geo.rotary);
     if (disc.modes > 0 && disc.modes < mass_.n)
         projectOnModes(disc.modes);
     invMassBending_ = lapack::solveSpd(mass_, bending_);
@@ -179,17 +186,26 @@ std::vector<Mode> LinearStability::lowestModes(double u, int count) const
     return modes;
 }
 
+std::vector<Mode> LinearStability::modesBelowCutoff(double u) const
+{
+    std::vector<Mode> modes = spectrum(u);
+    modes.erase(std::remove_if(modes.begin(), modes.end(),
+                               [&](const Mode& m) { return std::abs(m.frequency()) >= frequencyCutoff_; }),
+                modes.end());
+    return modes;
+}
+
 double LinearStability::growthRate(double u) const
 {
     double g = -std::numeric_limits<double>::infinity();
-    for (const Mode& m : spectrum(u))
+    for (const Mode& m : modesBelowCutoff(u))
         g = std::max(g, m.growth());
     return g;
 }
 
 bool LinearStability::unstable(double u) const
 {
-    const Mode m = leadingMode(spectrum(u));
+    const Mode m = leadingMode(modesBelowCutoff(u));
     return m.growth() > kRelativeGrowth * (1.0 + std::abs(m.lambda));
 }
 
@@ -213,7 +229,7 @@ Onset LinearStability::firstInstability(const ScanOptions& scan) const
         const double mid = 0.5 * (stableU + unstableU);
         (unstable(mid) ? unstableU : stableU) = mid;
     }
-    const Mode m = leadingMode(spectrum(unstableU));
+    const Mode m = leadingMode(modesBelowCutoff(unstableU));
     onset.found = true;
     onset.speed = 0.5 * (stableU + unstableU);
     onset.frequency = std::abs(m.frequency());
@@ -230,6 +246,19 @@ double LinearStability::divergenceSpeed() const
         if (mu.real() > 0.0 && std::abs(mu.imag()) <= 1e-8 * std::abs(mu))
             best = std::min(best, std::sqrt(mu.real()));
     return best;
+}
+
+TubeDiscretisation geometricDiscretisation(const PhysicalTube& tube, int elements, int modes, EndCondition left,
+                                           EndCondition right)
+{
+    TubeDiscretisation d;
+    d.model = TubeModel::Geometric;
+    d.geometric = tube.geometricParameters();
+    d.elements = elements;
+    d.modes = modes;
+    d.left = left;
+    d.right = right;
+    return d;
 }
 
 Onset criticalFlutterSpeed(const TubeDiscretisation& disc, double beta, const ScanOptions& scan)
@@ -266,6 +295,21 @@ std::vector<std::vector<Mode>> trackModes(const LinearStability& stability, cons
         loci.push_back(next);
     }
     return loci;
+}
+
+int unstableMode(const LinearStability& stability, const Onset& onset, int count, int points)
+{
+    if (!onset.found)
+        return 0;
+    std::vector<double> speeds(points);
+    for (int p = 0; p < points; ++p)
+        speeds[p] = onset.speed * (1.0 + 1e-4) * p / (points - 1);
+    const std::vector<Mode>& last = trackModes(stability, speeds, count).back();
+    int best = -1;
+    for (int m = 0; m < int(last.size()); ++m)
+        if (best < 0 || last[m].growth() > last[best].growth())
+            best = m;
+    return best + 1;
 }
 
 std::array<std::complex<double>, 2> dispersionOmega(double k, double u, double beta)

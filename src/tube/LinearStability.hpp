@@ -47,7 +47,16 @@ struct TubeDiscretisation
     EndCondition left = EndCondition::Clamped, right = EndCondition::Free;
     int elements = 40;
     int modes = 16;
+    GeometricParameters geometric; //!< the geometric model's ratios (TubeModel::Geometric only)
 };
+
+/*! The geometric model of a physical tube (its ratios: PhysicalTube::geometricParameters), to be built as
+ *  LinearStability(geometricDiscretisation(tube), tube.massRatio()); u and tau in the units of
+ *  PhysicalTube::velocityScale and timeScale. The modes are more than for Euler-Bernoulli because the axial and
+ *  shear modes of a stubby tube take places among the lowest. */
+TubeDiscretisation geometricDiscretisation(const PhysicalTube& tube, int elements = 40, int modes = 24,
+                                           EndCondition left = EndCondition::Clamped,
+                                           EndCondition right = EndCondition::Free);
 
 //! How the first crossing is searched: a scan in u, then bisection.
 struct ScanOptions
@@ -56,7 +65,8 @@ struct ScanOptions
 };
 
 /*! \brief The discretised linearised tube M eta_tt + C(u) eta_t + K(u) eta = 0 with
- *  C(u) = 2 sqrt(beta) u G and K(u) = K_b - u^2 K_f (K_f: centrifugal density minus its end terms), reduced to the
+ *  C(u) = 2 sqrt(beta) u G and K(u) = K_b - u^2 K_f (K_f: centrifugal density minus its end terms, minus the area
+ *  change's stiffening of the geometric model, docs/tube-model.md 7.3), reduced to the
  *  dofs the end conditions leave free, and its first-order form. */
 class LinearStability
 {
@@ -70,9 +80,15 @@ class LinearStability
     std::vector<Mode> spectrum(double u) const;
     //! The `count` lowest modes of non-negative frequency at u (one of each conjugate pair), by frequency.
     std::vector<Mode> lowestModes(double u, int count) const;
-    //! The largest growth rate max Re(lambda) at u.
+    /*! The largest growth rate max Re(lambda) at u, over the modes below frequencyCutoff(). For the geometric model
+     *  it is 0 (round-off) below the onset: its axial modes are undamped. */
     double growthRate(double u) const;
-    //! Some mode grows at u (Re lambda above round-off, relative to |lambda|).
+    /*! The geometric model's thickness-shear cutoff 1 / sqrt(shear rotary) (inf for Euler-Bernoulli): the modes
+     *  above it (Timoshenko's second spectrum) are left out of growthRate, unstable and firstInstability, because
+     *  at beta > 0 the discrete system has instabilities there whose onset and frequency move with the mesh
+     *  (docs/tube-model.md 7.5). */
+    double frequencyCutoff() const { return frequencyCutoff_; }
+    //! Some mode below the cutoff grows at u (Re lambda above round-off, relative to |lambda|).
     bool unstable(double u) const;
     //! The first u where the tube loses stability (scan, then bisection): tube.md 2.1's "first crossing".
     Onset firstInstability(const ScanOptions& scan) const;
@@ -84,7 +100,11 @@ class LinearStability
     lapack::Matrix firstOrderMatrix(double u) const;
     void projectOnModes(int modes);
 
+    //! The spectrum at u less the modes above the cutoff.
+    std::vector<Mode> modesBelowCutoff(double u) const;
+
     double beta_;
+    double frequencyCutoff_ = std::numeric_limits<double>::infinity();
     lapack::Matrix mass_, bending_, flow_, coriolis_;               //!< reduced M, K_b, K_f, G
     lapack::Matrix invMassBending_, invMassFlow_, invMassCoriolis_; //!< M^{-1} times each
 };
@@ -94,6 +114,11 @@ class LinearStability
  *  frequency or one becomes overdamped. Result[p][m]: mode m at speeds[p]. */
 std::vector<std::vector<Mode>> trackModes(const LinearStability& stability, const std::vector<double>& speeds,
                                           int count);
+
+/*! Which mode goes unstable at the onset: the `count` lowest modes without flow (1: lowest frequency) followed
+ *  along u from 0 to just above onset.speed (trackModes, `points` speeds); the one that grows most there. 0 if
+ *  there is no onset or the unstable mode is not among the `count` followed. */
+int unstableMode(const LinearStability& stability, const Onset& onset, int count = 6, int points = 301);
 
 //! u_cf of the scene's tube at mass ratio beta (the first instability, flutter or divergence).
 Onset criticalFlutterSpeed(const TubeDiscretisation& disc, double beta, const ScanOptions& scan);

@@ -29,6 +29,8 @@ struct ElementMatrices
     std::vector<double> bending;     //!< elastic energy: (v'', eta'') for Euler-Bernoulli
     std::vector<double> centrifugal; //!< (v', eta'): the fluid's u^2 w'^2 density
     std::vector<double> coriolis;    //!< (v, eta'): the fluid's 2 sqrt(beta) u w_t w' density (not symmetric)
+    //! per u^2, the stiffening of psi'^2 by the area change (docs/tube-model.md 7.3); empty: none
+    std::vector<double> areaStiffening;
     double& at(std::vector<double>& m, int i, int j) const { return m[i * size + j]; }
 };
 
@@ -57,7 +59,30 @@ class HermiteBeamElement : public TubeElement
     std::vector<int> constrained(EndCondition end) const override;
 };
 
-//! The element of a model (only Euler-Bernoulli so far; the geometric model's element is docs/tube-model.md 7).
-std::unique_ptr<TubeElement> makeElement(TubeModel model);
+/*! \brief The geometric model's planar element about the straight state (docs/tube-model.md 7): dofs (x, w, psi)
+ *  per node (axial and transverse displacement, section rotation), C0, with the strains Gamma1 - 1 = x',
+ *  Gamma2 = w' - psi, Omega3 = psi'. Dimensionless densities (GeometricParameters):
+ *      elastic   psi'^2 + (w' - psi)^2 / shear + x'^2 / extension
+ *      inertia   w_t^2 + x_t^2 + rotary psi_t^2
+ *      fluid     on the centreline slope w', as for Euler-Bernoulli (centrifugal, Coriolis, end term)
+ *      area      areaStiffening() u^2 psi'^2
+ *  w and psi use Reddy's interdependent interpolation: the exact static solution of the Timoshenko beam (psi
+ *  quadratic, w cubic, w' - psi = -2 shear psi'' constant over the element), so the element does not lock as
+ *  shear -> 0 and is the Hermite cubic at shear = 0; x is linear. */
+class GeometricElement : public TubeElement
+{
+  public:
+    explicit GeometricElement(const GeometricParameters& p) : p_(p) {}
+    int dofsPerNode() const override { return 3; }
+    ElementMatrices matrices(double h) const override;
+    std::vector<double> endTerm(double h, bool atRight) const override;
+    std::vector<int> constrained(EndCondition end) const override;
+
+  private:
+    GeometricParameters p_;
+};
+
+//! The element of a model; the Euler-Bernoulli element ignores the geometric parameters.
+std::unique_ptr<TubeElement> makeElement(TubeModel model, const GeometricParameters& geometric = {});
 
 } // namespace unilag::tube

@@ -45,8 +45,8 @@ const char* kindName(int k)
     return k == KindFlutter ? "flutter" : k == KindDivergence ? "divergence" : "none";
 }
 
-//! One row of stability.csv: beta, u_cf, omega_cf, kind, u_cd.
-constexpr int kRowWidth = 5;
+//! One row of stability.csv: beta, u_cf, omega_cf, kind, u_cd, the unstable mode (unstableMode; 0: none).
+constexpr int kRowWidth = 6;
 
 /*! The results of every beta as flat tables of doubles, so that the ranks' shares add up into rank 0's copy
  *  (each rank fills only its own rows; the others stay 0). */
@@ -66,6 +66,8 @@ TubeDiscretisation discretisation(const TubeScene& scene)
     d.right = scene.right;
     d.elements = scene.stability.elements;
     d.modes = scene.stability.modes;
+    if (scene.model == TubeModel::Geometric)
+        d.geometric = scene.physical.geometricParameters();
     return d;
 }
 
@@ -88,6 +90,7 @@ void studyOneBeta(const TubeScene& scene, int index, StudyTables& t)
     row[2] = onset.found ? onset.frequency : std::nan("");
     row[3] = !onset.found ? KindNone : onset.divergence ? KindDivergence : KindFlutter;
     row[4] = supportedBothEnds(scene) ? stability.divergenceSpeed() : std::nan("");
+    row[5] = unstableMode(stability, onset);
 
     const double uEnd = onset.found ? st.locusSpeedFactor * onset.speed : st.speedMax;
     std::vector<double> speeds(t.points);
@@ -169,7 +172,7 @@ void writeStabilityCsv(const TubeScene& scene, const StudyTables& t, const std::
     out << "beta,u_cf,omega_cf,instability,u_cd";
     if (scene.hasPhysical)
         out << ",U_cf_m_per_s,f_cf_hz";
-    out << "\n";
+    out << ",mode\n";
     const PhysicalTube& p = scene.physical;
     for (std::size_t i = 0; i < scene.stability.beta.size(); ++i)
     {
@@ -178,7 +181,7 @@ void writeStabilityCsv(const TubeScene& scene, const StudyTables& t, const std::
             << csvNumber(r[4]);
         if (scene.hasPhysical)
             out << ',' << csvNumber(r[1] * p.velocityScale()) << ',' << csvNumber(r[2] / (2 * kPi * p.timeScale()));
-        out << "\n";
+        out << ',' << int(r[5]) << "\n";
     }
 }
 
@@ -213,24 +216,45 @@ bool runPlotScript(const std::string& dir)
     return true;
 }
 
+//! The geometric model's ratios (docs/tube-model.md 7.2) and its area change.
+void writeGeometric(Summary& s, const PhysicalTube& p)
+{
+    const GeometricParameters g = p.geometricParameters();
+    const double cutoff = g.shear > 0.0 && g.rotary > 0.0 ? 1.0 / std::sqrt(g.shear * g.rotary) : std::nan("");
+    s.object("geometric",
+             {{"slenderness", jsonNumber(p.slenderness())},
+              {"radius_of_gyration", jsonNumber(p.radiusOfGyration())},
+              {"shear", jsonNumber(g.shear)},
+              {"extension", jsonNumber(g.extension)},
+              {"rotary_inertia", jsonNumber(g.rotary)},
+              {"area_change_m2", jsonNumber(p.areaChange)},
+              {"area_change_per_outer_radius2", jsonNumber(p.areaChange / (p.outerRadius * p.outerRadius))},
+              {"area_change_ratio", jsonNumber(g.areaChange)},
+              {"area_change_pressure", p.areaPressure == AreaPressure::Dynamic ? "\"dynamic\"" : "\"static\""},
+              {"area_stiffening_per_u2", jsonNumber(g.areaStiffening())},
+              {"frequency_cutoff", jsonNumber(cutoff)}});
+}
+
 void writeSummary(const TubeScene& scene, const StudyTables& t, int ranks, double wall, bool plotted,
                   const std::string& file)
 {
     Summary s;
     s.text("scene", scene.file).text("title", scene.name).text("status", "completed");
-    s.text("solver", "tube linear stability").text("model", "euler_bernoulli");
+    const bool geometric = scene.model == TubeModel::Geometric;
+    s.text("solver", "tube linear stability").text("model", geometric ? "geometric" : "euler_bernoulli");
     s.object("ends", {{"left", "\"" + std::string(endName(scene.left)) + "\""},
                       {"right", "\"" + std::string(endName(scene.right)) + "\""}});
     s.integer("elements", scene.stability.elements).integer("modes", scene.stability.modes);
     s.text("sign_convention", "eta ~ exp(i omega tau); unstable where Im(omega) < 0");
-    Summary::Pairs ucf, wcf;
+    Summary::Pairs ucf, wcf, mode;
     for (std::size_t i = 0; i < scene.stability.beta.size(); ++i)
     {
         const std::string key = csvNumber(scene.stability.beta[i]);
         ucf.emplace_back(key, jsonNumber(t.rows[i * kRowWidth + 1]));
         wcf.emplace_back(key, jsonNumber(t.rows[i * kRowWidth + 2]));
+        mode.emplace_back(key, std::to_string(int(t.rows[i * kRowWidth + 5])));
     }
-    s.object("u_cf", ucf).object("omega_cf", wcf);
+    s.object("u_cf", ucf).object("omega_cf", wcf).object("unstable_mode", mode);
     if (supportedBothEnds(scene))
         s.number("u_cd", t.rows.empty() ? std::nan("") : t.rows[4]);
     if (scene.hasPhysical)
@@ -243,6 +267,8 @@ void writeSummary(const TubeScene& scene, const StudyTables& t, int ranks, doubl
                               {"velocity_scale", jsonNumber(p.velocityScale())},
                               {"time_scale", jsonNumber(p.timeScale())}});
     }
+    if (geometric)
+        writeGeometric(s, scene.physical);
     s.integer("ranks", ranks).number("wall_seconds", wall);
     s.raw("plot", plotted ? "\"stability.png\"" : "null");
     s.write(file);

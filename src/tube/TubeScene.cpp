@@ -46,6 +46,21 @@ void readRadii(ConfigNode& t, PhysicalTube& p)
     }
 }
 
+/*! tube.area_change (K of A = A0 - K |Omega|^2 / 2, m^2, >= 0) and tube.area_change_pressure (what loads it,
+ *  docs/tube-model.md 7.3): only the geometric model has an area change. */
+void readAreaChange(ConfigNode& t, TubeScene& s)
+{
+    const bool geometric = s.model == TubeModel::Geometric;
+    for (const char* key : {"area_change", "area_change_pressure"})
+        if (t.has(key) && !geometric)
+            t.fail(key, "only the geometric model has an area change; set tube.model: geometric");
+    if (!geometric)
+        return;
+    s.physical.areaChange = t.nonNegative("area_change", 0.0);
+    s.physical.areaPressure = t.option<AreaPressure>(
+        "area_change_pressure", "dynamic", {{"dynamic", AreaPressure::Dynamic}, {"static", AreaPressure::Static}});
+}
+
 //! tube: the model and, optionally, the physical tube (then every physical key is required).
 void readTube(ConfigNode& root, TubeScene& s)
 {
@@ -53,9 +68,6 @@ void readTube(ConfigNode& root, TubeScene& s)
     s.model =
         t.option<TubeModel>("model", "euler_bernoulli",
                             {{"euler_bernoulli", TubeModel::EulerBernoulli}, {"geometric", TubeModel::Geometric}});
-    if (s.model == TubeModel::Geometric)
-        t.fail("model", "'geometric' (shear, extension, area change) is not implemented yet; use 'euler_bernoulli' "
-                        "(docs/tube-model.md 7)");
     PhysicalTube& p = s.physical;
     p.length = positiveIfGiven(t, "length");
     readRadii(t, p);
@@ -67,6 +79,7 @@ void readTube(ConfigNode& root, TubeScene& s)
     p.shearCoefficient = t.number("shear_coefficient", 0.5);
     if (!(p.shearCoefficient > 0.0 && p.shearCoefficient <= 1.0))
         t.fail("shear_coefficient", "must be in (0, 1], found " + num(p.shearCoefficient));
+    readAreaChange(t, s);
 
     ConfigNode f = root.sub("fluid");
     p.fluidDensity = positiveIfGiven(f, "density");
@@ -81,6 +94,9 @@ void readTube(ConfigNode& root, TubeScene& s)
     for (const auto& [key, v] : required)
         anyGiven = anyGiven || !std::isnan(v);
     s.hasPhysical = anyGiven;
+    if (s.model == TubeModel::Geometric && !anyGiven)
+        t.missing("length", "(the geometric model needs the physical tube: length, outer_radius, inner_radius or "
+                            "wall_thickness, youngs_modulus, density and fluid.density)");
     if (anyGiven)
     {
         for (const auto& [key, v] : required)
@@ -114,6 +130,9 @@ void readStability(ConfigNode& root, TubeScene& s)
 {
     ConfigNode st = root.sub("stability");
     StabilityStudy& study = s.stability;
+    if (st.has("beta") && s.model == TubeModel::Geometric)
+        st.fail("beta", "the geometric model takes its mass ratio (and its other ratios) from the physical tube; "
+                        "remove stability.beta");
     if (st.has("beta") || !s.hasPhysical)
         study.beta = st.numbers("beta", true);
     else
@@ -173,9 +192,29 @@ const char* endName(EndCondition e)
     return "?";
 }
 
+double PhysicalTube::wallArea() const
+{
+    return kPi * (outerRadius * outerRadius - innerRadius * innerRadius);
+}
+double PhysicalTube::secondMoment() const
+{
+    return kPi * (std::pow(outerRadius, 4) - std::pow(innerRadius, 4)) / 4.0;
+}
+double PhysicalTube::radiusOfGyration() const
+{
+    return std::sqrt(secondMoment() / wallArea());
+}
+double PhysicalTube::slenderness() const
+{
+    return length / radiusOfGyration();
+}
+double PhysicalTube::shearModulus() const
+{
+    return youngsModulus / (2.0 * (1.0 + poissonRatio));
+}
 double PhysicalTube::bendingStiffness() const
 {
-    return youngsModulus * kPi * (std::pow(outerRadius, 4) - std::pow(innerRadius, 4)) / 4.0;
+    return youngsModulus * secondMoment();
 }
 double PhysicalTube::fluidMassPerLength() const
 {
@@ -196,6 +235,18 @@ double PhysicalTube::velocityScale() const
 double PhysicalTube::timeScale() const
 {
     return length * length * std::sqrt((fluidMassPerLength() + wallMassPerLength()) / bendingStiffness());
+}
+
+GeometricParameters PhysicalTube::geometricParameters() const
+{
+    const double l2 = length * length, ei = bendingStiffness();
+    GeometricParameters g;
+    g.shear = ei / (shearCoefficient * shearModulus() * wallArea() * l2);
+    g.extension = ei / (youngsModulus * wallArea() * l2);
+    g.rotary = wallDensity * secondMoment() / ((fluidMassPerLength() + wallMassPerLength()) * l2);
+    g.areaChange = areaChange / (kPi * innerRadius * innerRadius * l2);
+    g.pressure = areaPressure;
+    return g;
 }
 
 bool isTubeScene(const std::string& file)

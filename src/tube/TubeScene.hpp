@@ -31,7 +31,30 @@ enum class EndCondition
 enum class TubeModel
 {
     EulerBernoulli, //!< inextensible, unshearable, no area change: the classical pipe (tube.md 2.1)
-    Geometric       //!< finite shear and extension, area change K (tube.md 1.3): not implemented yet
+    Geometric       //!< finite shear and extension, rotary inertia, area change K (docs/tube-model.md 7)
+};
+
+/*! What loads the area change A = A0 - K psi'^2 / 2 about the straight state (docs/tube-model.md 7.3): the bending
+ *  stiffness becomes EI + K (rho_f U^2 / 2 - mu0). Dynamic: mu0 = 0, the multiplier taken as the pressure level,
+ *  ambient (0) at the free outlet, so the dynamic pressure rho_f U^2 / 2 stiffens. Static: mu0 = rho_f U^2 / 2 - p0
+ *  (the fluid equation's Bernoulli relation) with the static pressure p0 ambient, so K drops out. */
+enum class AreaPressure
+{
+    Dynamic,
+    Static
+};
+
+/*! The geometric model's dimensionless parameters (docs/tube-model.md 7.2), in the units of the Euler-Bernoulli
+ *  problem (lengths by L, time by L^2 sqrt((M + m) / EI), energies by EI / L). All 0: the Euler-Bernoulli limit. */
+struct GeometricParameters
+{
+    double shear = 0.0;      //!< EI / (kappa G A_w L^2): shear compliance
+    double extension = 0.0;  //!< EI / (E A_w L^2) = (r_g / L)^2: axial compliance
+    double rotary = 0.0;     //!< rho_w I / ((M + m) L^2): rotary inertia of the wall section
+    double areaChange = 0.0; //!< K / (A_i L^2) (A_i = pi Ri^2, the fluid's area A0)
+    AreaPressure pressure = AreaPressure::Dynamic;
+    //! The growth of the psi'^2 coefficient per u^2: K rho_f U^2 / (2 EI) = areaChange u^2 / 2 (dynamic), else 0.
+    double areaStiffening() const { return pressure == AreaPressure::Dynamic ? 0.5 * areaChange : 0.0; }
 };
 
 const char* endName(EndCondition e);
@@ -42,13 +65,22 @@ struct PhysicalTube
     double length = 1.0, outerRadius = 0.0, innerRadius = 0.0;
     double youngsModulus = 0.0, poissonRatio = 0.3, wallDensity = 0.0, shearCoefficient = 0.5;
     double fluidDensity = 0.0;
+    double areaChange = 0.0; //!< K of A = A0 - K |Omega|^2 / 2 (m^2)
+    AreaPressure areaPressure = AreaPressure::Dynamic;
 
+    double wallArea() const;           //!< A_w = pi (Ro^2 - Ri^2)
+    double secondMoment() const;       //!< I = pi (Ro^4 - Ri^4) / 4
+    double radiusOfGyration() const;   //!< r_g = sqrt(I / A_w)
+    double slenderness() const;        //!< L / r_g
+    double shearModulus() const;       //!< G = E / (2 (1 + nu))
     double bendingStiffness() const;   //!< EI
     double fluidMassPerLength() const; //!< M = rho_f pi Ri^2
     double wallMassPerLength() const;  //!< m = rho_w pi (Ro^2 - Ri^2)
     double massRatio() const;          //!< beta = M / (M + m)
     double velocityScale() const;      //!< U = u sqrt(EI / M) / L
     double timeScale() const;          //!< t = tau L^2 sqrt((M + m) / EI)
+    //! The geometric model's ratios of this tube (shear with the shear coefficient kappa, area change K).
+    GeometricParameters geometricParameters() const;
 };
 
 //! The linear stability study (dimensionless, tube.md 2.1).

@@ -1,5 +1,6 @@
 # The tube solver's linear stability (src/tube/) through `unilag run` (a scene with a tube: section): u_cf against
-# tube.md 2.1, the same table on 1 and 3 ranks, --check, and bad input refused. About 10 s in all.
+# tube.md 2.1, the same table on 1 and 3 ranks, --check, bad input refused, and the geometric model's CLI path
+# (docs/tube-model.md 7). About 40 s in all.
 set(UNILAG_TUBE ${UNILAG} run)
 set(UNILAG_TUBE_SH "${UNILAG} run") # inside bash -c strings
 set(TUBE_SCENE ${INPUTS}/tube_stability.yaml)
@@ -55,3 +56,46 @@ set_tests_properties(tube_check_fails_coarse PROPERTIES LABELS "tube;regression"
 add_test(NAME tube_error_output_file COMMAND bash ${SCRIPTS}/expect_error.sh ${TUBE_SCENE}/out
          "--output '.*tube_stability.yaml/out': .*tube_stability.yaml is not a folder" -- ${UNILAG_TUBE} ${TUBE_SCENE})
 set_tests_properties(tube_error_output_file PROPERTIES LABELS "tube;regression")
+
+# The geometric model (docs/tube-model.md 7) through the CLI, on the talk's rubber tube (L / r_g = 343, beta 0.36).
+# K = 0: u_cf 8.576623 (40 elements, 24 modes; 80, 36: 8.57626), the second mode, within 0.2% of Euler-Bernoulli's
+# 8.593042 (shear and rotary inertia lower it by 0.19%); bound [8.570, 8.583]. K = 0.02 R^2 (dynamic pressure):
+# u_cf 14.45591 (5.62 m/s); bound [14.40, 14.51].
+set(TUBE_GEO_SCENE ${INPUTS}/tube_rubber_geometric.yaml)
+add_test(NAME tube_geometric_cli COMMAND bash -c
+         "rm -rf ${WORK}/tube_geo && ${UNILAG_TUBE_SH} ${TUBE_GEO_SCENE} --check --set tube.area_change=0.0 \
+          --set stability.speed_max=12.0 --set output.plot=false --output ${WORK}/tube_geo \
+          && awk -F, 'NR == 2 && $2 > 8.570 && $2 < 8.583 && $4 == \"flutter\" && $8 == 2 { print \"tube_geometric: PASS\" }' \
+             ${WORK}/tube_geo/stability.csv")
+set_tests_properties(tube_geometric_cli PROPERTIES LABELS "tube;regression" PASS_REGULAR_EXPRESSION "tube_geometric: PASS")
+add_test(NAME tube_geometric_area_change COMMAND bash -c
+         "rm -rf ${WORK}/tube_geo_k && ${UNILAG_TUBE_SH} ${TUBE_GEO_SCENE} --set tube.area_change=5.0e-7 \
+          --set stability.speed_max=20.0 --set output.plot=false --output ${WORK}/tube_geo_k \
+          && awk -F, 'NR == 2 && $2 > 14.40 && $2 < 14.51 && $4 == \"flutter\" { print \"tube_area_change: PASS\" }' \
+             ${WORK}/tube_geo_k/stability.csv")
+set_tests_properties(tube_geometric_area_change PROPERTIES LABELS "tube;regression"
+                     PASS_REGULAR_EXPRESSION "tube_area_change: PASS")
+
+# Every shipped tube scene passes --check (tube_stability.yaml: tube_check_passes above).
+foreach(scene tube_rubber tube_rubber_geometric)
+  add_test(NAME tube_check_${scene} COMMAND ${UNILAG_TUBE} ${INPUTS}/${scene}.yaml --check --set output.plot=false
+           --output ${WORK}/tube_check_${scene})
+  set_tests_properties(tube_check_${scene} PROPERTIES LABELS "tube;regression" PASS_REGULAR_EXPRESSION "check passed")
+endforeach()
+
+# Bad input in a geometric scene: exit 2, one message naming the file and the key, no output folder.
+function(tube_geo_error name pattern)
+  add_test(NAME tube_error_${name} COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/tube_err_${name} "${pattern}"
+           -- ${UNILAG_TUBE} ${TUBE_GEO_SCENE} ${ARGN})
+  set_tests_properties(tube_error_${name} PROPERTIES LABELS "tube;regression")
+endfunction()
+tube_geo_error(negative_area_change
+               "tube_rubber_geometric.yaml: key 'tube.area_change': must be a non-negative number, found -1e-06"
+               --set tube.area_change=-1.0e-6)
+tube_geo_error(area_change_needs_geometric
+               "tube_rubber_geometric.yaml: key 'tube.area_change': only the geometric model has an area change"
+               --set tube.model=euler_bernoulli)
+tube_geo_error(geometric_beta "tube_rubber_geometric.yaml: key 'stability.beta': the geometric model takes its mass ratio"
+               --set stability.beta=[0.2])
+tube_error(geometric_needs_tube "tube_stability.yaml: key 'tube.length': missing \\(the geometric model needs the physical tube"
+           --set tube.model=geometric)

@@ -126,11 +126,53 @@ TEST(TubeScene, BadInputNamesFileAndKey)
     }
 }
 
+const std::string kGeometric = std::string(UNILAG_SOURCE_DIR) + "/inputs/tube_rubber_geometric.yaml";
+
+TEST(TubeScene, ReadsTheGeometricScene)
+{
+    const TubeScene s = readTubeScene(kGeometric, {});
+    EXPECT_EQ(s.model, TubeModel::Geometric);
+    ASSERT_TRUE(s.hasPhysical);
+    EXPECT_DOUBLE_EQ(s.physical.areaChange, 2.5e-6);
+    EXPECT_EQ(s.physical.areaPressure, AreaPressure::Dynamic);
+    EXPECT_DOUBLE_EQ(s.physical.shearCoefficient, 0.5);
+    EXPECT_NEAR(s.stability.beta.at(0), 0.36, 0.001);
+    // K / (A_i L^2) = 2.5e-6 / (pi 9e-6)
+    EXPECT_NEAR(s.physical.geometricParameters().areaChange, 2.5e-6 / (3.14159265358979 * 9e-6), 1e-9);
+    EXPECT_EQ(readTubeScene(kGeometric, {"tube.area_change_pressure=static"}).physical.areaPressure,
+              AreaPressure::Static);
+}
+
+TEST(TubeScene, GeometricBadInputNamesFileAndKey)
+{
+    struct Case
+    {
+        std::string file;
+        std::vector<std::string> set;
+        std::string expected;
+    };
+    const std::vector<Case> cases = {
+        {kGeometric, {"tube.area_change=-1.0e-6"}, "key 'tube.area_change': must be a non-negative number"},
+        {kGeometric, {"tube.area_change_pressure=total"}, "key 'tube.area_change_pressure': 'total' is not one of"},
+        {kGeometric, {"stability.beta=[0.2]"}, "key 'stability.beta': the geometric model takes its mass ratio"},
+        {kGeometric, {"tube.model=euler_bernoulli"}, "key 'tube.area_change': only the geometric model has"},
+        {kScene,
+         {"tube.model=geometric", "stability.beta=[0.2]"},
+         "key 'tube.length': missing (the geometric model needs"},
+    };
+    for (const Case& c : cases)
+    {
+        const std::string msg = errorOf(c.file, c.set);
+        EXPECT_NE(msg.find(c.file + ": " + c.expected), std::string::npos) << c.set[0] << " gave: " << msg;
+    }
+}
+
 TEST(TubeRun, BadInputExitsTwoAndWritesNothing)
 {
     const fs::path out = scratch() / "bad";
     fs::remove_all(out);
-    EXPECT_EQ(unilag::runTube(kScene, {"stability.beta=[0.5,1.5]"}, out.string(), false, MPI_COMM_WORLD), unilag::ExitInput);
+    EXPECT_EQ(unilag::runTube(kScene, {"stability.beta=[0.5,1.5]"}, out.string(), false, MPI_COMM_WORLD),
+              unilag::ExitInput);
     EXPECT_FALSE(fs::exists(out));
 }
 
@@ -143,7 +185,7 @@ TEST(TubeRun, WritesTheStabilityTable)
     std::string header, row;
     std::getline(csv, header);
     std::getline(csv, row);
-    EXPECT_EQ(header, "beta,u_cf,omega_cf,instability,u_cd,U_cf_m_per_s,f_cf_hz");
+    EXPECT_EQ(header, "beta,u_cf,omega_cf,instability,u_cd,U_cf_m_per_s,f_cf_hz,mode");
     // tube.md 2.2 (A): u_cf = 8.59, U = 8.59 x 0.389 = 3.3 m/s
     const double ucf = std::stod(row.substr(row.find(',') + 1));
     EXPECT_NEAR(ucf, 8.59, 0.01);

@@ -80,6 +80,8 @@ TEST(TubeStability, CantileverFlutterIsHopfWithImOmegaNegativeAbove)
     for (const Mode& m : s.spectrum(1.02 * o.speed))
         minImOmega = std::min(minImOmega, m.omega().imag());
     EXPECT_LT(minImOmega, 0.0) << "above u_cf a mode grows: Im(omega) < 0";
+    // the second no-flow mode (omega 22.03 at u = 0) is the one that flutters, at omega 13.71 (Paidoussis 3.5)
+    EXPECT_EQ(unstableMode(s, o), 2);
 }
 
 /*! The beta in [lo, hi] where u_cf jumps, by bisection on which half holds the larger change of u_cf.
