@@ -31,7 +31,56 @@ void lineFit(const std::vector<double>& x, const std::vector<double>& y, double&
     residual = std::sqrt(r2 / n);
 }
 
+//! The fit over given peaks (at least 4): log-linear growth, frequency from their spacing (half periods).
+GrowthFit fitPeaks(const std::vector<double>& peakTime, const std::vector<double>& logPeak)
+{
+    GrowthFit fit;
+    fit.peaks = int(peakTime.size());
+    if (fit.peaks < 4)
+        return fit;
+    lineFit(peakTime, logPeak, fit.growthRate, fit.residual);
+    fit.frequency = kPi * (fit.peaks - 1) / (peakTime.back() - peakTime.front());
+    fit.lastPeak = std::exp(logPeak.back());
+    fit.ok = true;
+    return fit;
+}
+
 } // namespace
+
+GrowthFit fitGrowthSigned(const std::vector<double>& t, const std::vector<double>& y, double from)
+{
+    std::vector<double> peakTime, logPeak;
+    int sign = 0;
+    double peak = 0.0, peakAt = 0.0;
+    for (std::size_t i = 0; i < t.size(); ++i)
+    {
+        if (t[i] < from || y[i] == 0.0)
+            continue;
+        const int s = y[i] > 0.0 ? 1 : -1;
+        const double v = std::abs(y[i]);
+        if (sign == 0 || (s != sign && v > 0.1 * peak)) // a half cycle ends (a ripple near zero does not)
+        {
+            if (sign != 0)
+            {
+                peakTime.push_back(peakAt);
+                logPeak.push_back(std::log(peak));
+            }
+            sign = s;
+            peak = 0.0;
+        }
+        if (s == sign && v > peak)
+        {
+            peak = v;
+            peakAt = t[i];
+        }
+    }
+    if (!peakTime.empty()) // the first half cycle began before `from`: its peak may not be one
+    {
+        peakTime.erase(peakTime.begin());
+        logPeak.erase(logPeak.begin());
+    }
+    return fitPeaks(peakTime, logPeak);
+}
 
 GrowthFit fitGrowth(const std::vector<double>& t, const std::vector<double>& a, double from)
 {
@@ -43,15 +92,9 @@ GrowthFit fitGrowth(const std::vector<double>& t, const std::vector<double>& a, 
             peakTime.push_back(t[i]);
             logPeak.push_back(std::log(a[i]));
         }
-    fit.peaks = int(peakTime.size());
-    if (fit.peaks >= 4)
-    {
-        lineFit(peakTime, logPeak, fit.growthRate, fit.residual);
-        fit.frequency = kPi * (fit.peaks - 1) / (peakTime.back() - peakTime.front());
-        fit.lastPeak = std::exp(logPeak.back());
-        fit.ok = true;
+    fit = fitPeaks(peakTime, logPeak);
+    if (fit.ok)
         return fit;
-    }
     // a whirl: the distance from the axis has no oscillation to speak of; fit its logarithm directly
     std::vector<double> tw, lw;
     for (std::size_t i = 0; i < t.size(); ++i)

@@ -3,6 +3,7 @@
  *  straight axis in a flutter run): least squares of log(peak) against time over the local maxima of the
  *  amplitude after a start time. A planar oscillation y = a e^(sigma t) sin(omega t) has |y|'s peaks every half
  *  period, so omega = pi / (mean spacing); a whirling (3D) one has few peaks, and then log|y| itself is fitted.
+ *  fitGrowthSigned does the same from the signed displacement with hysteresis, for planar runs.
  */
 #pragma once
 
@@ -23,5 +24,10 @@ struct GrowthFit
 
 //! The fit of amplitude(t) over t >= from. t increasing; amplitude >= 0 (a distance).
 GrowthFit fitGrowth(const std::vector<double>& t, const std::vector<double>& amplitude, double from);
+
+/*! The fit of a signed planar oscillation y(t) over t >= from: one peak per half cycle, the largest |y| between
+ *  two changes of sign, where a change of sign counts only once |y| exceeds a tenth of the half cycle's peak (so
+ *  that a small ripple of the higher modes riding on y near zero makes no extra half cycles). */
+GrowthFit fitGrowthSigned(const std::vector<double>& t, const std::vector<double>& y, double from);
 
 } // namespace unilag::tube

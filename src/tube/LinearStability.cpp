@@ -319,4 +319,17 @@ std::array<std::complex<double>, 2> dispersionOmega(double k, double u, double b
     return {k * (convected + root), k * (convected - root)};
 }
 
+TubeDiscretisation sceneDiscretisation(const TubeScene& scene)
+{
+    TubeDiscretisation d;
+    d.model = scene.model;
+    d.left = scene.left;
+    d.right = scene.right;
+    d.elements = scene.stability.elements;
+    d.modes = scene.stability.modes;
+    if (scene.model == TubeModel::Geometric)
+        d.geometric = scene.physical.geometricParameters();
+    return d;
+}
+
 } // namespace unilag::tube

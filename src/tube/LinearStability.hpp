@@ -58,6 +58,10 @@ TubeDiscretisation geometricDiscretisation(const PhysicalTube& tube, int element
                                            EndCondition left = EndCondition::Clamped,
                                            EndCondition right = EndCondition::Free);
 
+//! The discretisation a scene asks for (its model, ends, stability.elements and .modes, its physical tube's
+//! geometric parameters).
+TubeDiscretisation sceneDiscretisation(const TubeScene& scene);
+
 //! How the first crossing is searched: a scan in u, then bisection.
 struct ScanOptions
 {

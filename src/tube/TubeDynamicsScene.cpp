@@ -32,7 +32,7 @@ void readFlow(ConfigNode& d, DynamicsSettings& s)
         f.fail("critical_fraction", "give speed or critical_fraction, not both");
     s.flowSpeed = f.nonNegative("speed", 0.0);
     if (f.has("critical_fraction"))
-        s.criticalFraction = f.positive("critical_fraction", 1.0, true);
+        s.criticalFraction = f.nonNegative("critical_fraction", 1.0);
     f.rejectUnknown();
 }
 

@@ -58,18 +58,6 @@ struct StudyTables
     int lociWidth() const { return 1 + 2 * modes; }
 };
 
-TubeDiscretisation discretisation(const TubeScene& scene)
-{
-    TubeDiscretisation d;
-    d.model = scene.model;
-    d.left = scene.left;
-    d.right = scene.right;
-    d.elements = scene.stability.elements;
-    d.modes = scene.stability.modes;
-    if (scene.model == TubeModel::Geometric)
-        d.geometric = scene.physical.geometricParameters();
-    return d;
-}
 
 //! Divergence applies where no end is free (a free end makes the flow force a follower force).
 bool supportedBothEnds(const TubeScene& scene)
@@ -82,7 +70,7 @@ void studyOneBeta(const TubeScene& scene, int index, StudyTables& t)
 {
     const StabilityStudy& st = scene.stability;
     const double beta = st.beta[index];
-    const LinearStability stability(discretisation(scene), beta);
+    const LinearStability stability(sceneDiscretisation(scene), beta);
     const Onset onset = stability.firstInstability({st.speedMax, st.speedStep, st.tolerance});
     double* row = &t.rows[std::size_t(index) * kRowWidth];
     row[0] = beta;
@@ -134,7 +122,7 @@ std::vector<std::string> convergenceCheck(const TubeScene& scene, const StudyTab
 {
     const StabilityStudy& st = scene.stability;
     const int nBeta = int(st.beta.size()), rank = mpi::rank(comm), size = mpi::size(comm);
-    TubeDiscretisation fine = discretisation(scene);
+    TubeDiscretisation fine = sceneDiscretisation(scene);
     fine.elements *= 2;
     fine.modes = fine.modes > 0 ? fine.modes + fine.modes / 2 : 0;
     std::vector<double> fineSpeed(nBeta, 0.0);

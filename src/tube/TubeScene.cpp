@@ -162,6 +162,9 @@ void readDynamicsSection(ConfigNode& root, TubeScene& s)
     if (!s.hasPhysical)
         d.fail("end_time", "a time run needs the physical tube (tube.length, radii, youngs_modulus, density and "
                            "fluid.density)");
+    if (s.physical.areaChange > 0.0)
+        d.fail("end_time", "the nonlinear rod has a constant cross-section; set tube.area_change to 0 for a time run "
+                           "(the area change is in the linear study, docs/tube-model.md 7)");
     s.dynamics = readDynamics(d);
     s.hasDynamics = true;
 }

@@ -53,13 +53,7 @@ RodConstants rodConstants(const PhysicalTube& p, const DynamicsSettings& d)
 //! The linear model of the same tube, for u_cf and the linear growth rate at the run's speed.
 LinearStability linearModel(const TubeScene& scene)
 {
-    TubeDiscretisation disc;
-    disc.model = TubeModel::EulerBernoulli;
-    disc.left = scene.left;
-    disc.right = scene.right;
-    disc.elements = scene.stability.elements;
-    disc.modes = scene.stability.modes;
-    return LinearStability(disc, scene.physical.massRatio());
+    return LinearStability(sceneDiscretisation(scene), scene.physical.massRatio());
 }
 
 //! The perturbation's shape along the tube, 1 at its largest: a tip-load deflection when the right end is free.
@@ -67,6 +61,29 @@ double perturbationShape(const TubeScene& scene, double s)
 {
     const double x = s / scene.physical.length;
     return scene.right == EndCondition::Free ? 0.5 * x * x * (3.0 - x) : std::sin(kPi * x);
+}
+
+//! d(shape)/ds.
+double perturbationSlope(const TubeScene& scene, double s)
+{
+    const double L = scene.physical.length, x = s / L;
+    return scene.right == EndCondition::Free ? 1.5 * x * (2.0 - x) / L : kPi / L * std::cos(kPi * x);
+}
+
+/*! The initial perturbation: node velocities tipVelocity x shape(s), and the sections' spins that turn each with
+ *  its tangent (omega = e1 x v', the tube being straight along e1), so that no shear rate is imposed: a velocity
+ *  field without those spins would excite the stiff shear-rotation modes. */
+void perturb(TubeDynamics& rod, const TubeScene& scene)
+{
+    const std::array<double, 3> a = scene.dynamics.tipVelocity;
+    rod.setVelocity([&](double s) {
+        const double w = perturbationShape(scene, s);
+        return std::array<double, 3>{a[0] * w, a[1] * w, a[2] * w};
+    });
+    rod.setSpin([&](double s) {
+        const double dw = perturbationSlope(scene, s);
+        return std::array<double, 3>{0.0, -a[2] * dw, a[1] * dw};
+    });
 }
 
 struct TipSeries
@@ -82,12 +99,15 @@ struct TipSeries
     }
 };
 
-//! The tube as a TimeSystem: an explicit step has no retry (a non-finite state stops the run with a diagnosis).
+/*! The tube as a TimeSystem. A loop step is kSubsteps rod steps of the splitting with their half kicks merged
+ *  (TubeDynamics::run: one load evaluation per rod step instead of two); the tip is sampled once per loop step,
+ *  thousands of times per period of the lowest modes. An explicit step has no retry: a non-finite state stops the
+ *  run with a diagnosis. */
 class TubeTimeSystem : public TimeSystem
 {
   public:
     TubeTimeSystem(TubeDynamics& rod, const DynamicsSettings& d, const std::string& dir)
-        : rod_(rod), factor_(d.stepFactor), writer_(MPI_COMM_SELF, dir, "tube", io::CellType::Polyline)
+        : rod_(rod), step_(loopStep(rod, d)), writer_(MPI_COMM_SELF, dir, "tube", io::CellType::Polyline)
     {
         std::vector<long long> segments;
         for (int j = 0; j + 1 < rod.nodes(); ++j)
@@ -95,12 +115,14 @@ class TubeTimeSystem : public TimeSystem
         writer_.setTopology(rod.nodes(), rod.nodes() - 1, segments);
         tip.add(0.0, rod.tip());
     }
-    double prepareStep(double, long) override { return factor_ * rod_.stableStep(); }
+    static int substeps() { return kSubsteps; }
+    double prepareStep(double, long) override { return step_; }
+    double loopStep() const { return step_; }
     void beginAttempts() override {}
     bool attemptStep(double, double dt, int, int& iterations) override
     {
         iterations = 0;
-        rod_.step(dt);
+        rod_.run(dt / kSubsteps, kSubsteps);
         return rod_.finite();
     }
     std::string failure(double t, double dt, int) override
@@ -134,8 +156,17 @@ class TubeTimeSystem : public TimeSystem
     TipSeries tip;
 
   private:
+    static constexpr int kSubsteps = 16;
+    /*! One fixed step that divides the output interval: a symplectic splitting keeps its energy error bounded at a
+     *  fixed step, and every change of step (an output time clipping it) shifts that error a little. */
+    static double loopStep(const TubeDynamics& rod, const DynamicsSettings& d)
+    {
+        const double stable = kSubsteps * d.stepFactor * rod.stableStep();
+        const double interval = d.outputInterval > 0.0 ? std::min(d.outputInterval, d.endTime) : d.endTime;
+        return interval / std::ceil(interval / stable);
+    }
     TubeDynamics& rod_;
-    double factor_;
+    double step_;
     io::XdmfWriter writer_;
 };
 
@@ -154,22 +185,44 @@ struct RunFigures
     double flowSpeed = 0, uDimensionless = 0, uCritical = NAN, linearGrowth = NAN, linearFrequency = NAN;
     GrowthFit fit;
     double outOfPlane = 0, orthogonality = 0, wall = 0, nodeStepsPerSecond = 0;
+    long rodSteps = 0;          //!< steps of the splitting (the loop's steps times its substeps)
+    std::vector<Mode> spectrum; //!< the linear model's at the run's speed
 };
 
-RunFigures measure(const TubeScene& scene, const TipSeries& tip, const TubeDynamics& rod)
+/*! The fit of the tip's motion: a planar run (one transverse component under a tenth of the other) on its signed
+ *  displacement, a 3D run on its distance from the axis. */
+GrowthFit fitTip(const TipSeries& tip, double from, double& outOfPlane)
 {
-    RunFigures f;
-    const DynamicsSettings& d = scene.dynamics;
-    f.fit = fitGrowth(tip.t, tip.distance, d.fitFrom * d.endTime);
-    double maxDistance = 0.0, maxZ = 0.0;
+    double maxY = 0.0, maxZ = 0.0;
     for (std::size_t i = 0; i < tip.t.size(); ++i)
     {
-        maxDistance = std::max(maxDistance, tip.distance[i]);
+        maxY = std::max(maxY, std::abs(tip.y[i]));
         maxZ = std::max(maxZ, std::abs(tip.z[i]));
     }
-    f.outOfPlane = maxDistance > 0.0 ? maxZ / maxDistance : 0.0;
-    f.orthogonality = rod.orthogonalityDefect();
-    return f;
+    outOfPlane = maxY + maxZ > 0.0 ? maxZ / std::max(maxY, maxZ) : 0.0;
+    if (maxZ <= 0.1 * maxY)
+        return fitGrowthSigned(tip.t, tip.y, from);
+    if (maxY <= 0.1 * maxZ)
+        return fitGrowthSigned(tip.t, tip.z, from);
+    return fitGrowth(tip.t, tip.distance, from);
+}
+
+/*! The linear mode the tip shows: the one nearest the fitted frequency (below u_cf the largest growth rate is an
+ *  undamped axial mode's 0, not the bending modes' decay), or the fastest growing one without a frequency. */
+void pickLinearMode(const std::vector<Mode>& spectrum, double fittedFrequency, RunFigures& f)
+{
+    double best = INFINITY;
+    f.linearGrowth = -INFINITY;
+    for (const Mode& m : spectrum)
+    {
+        const double distance = fittedFrequency > 0.0 ? std::abs(std::abs(m.frequency()) - fittedFrequency) : -m.growth();
+        if (distance < best)
+        {
+            best = distance;
+            f.linearGrowth = m.growth();
+            f.linearFrequency = std::abs(m.frequency());
+        }
+    }
 }
 
 void writeSummary(const TubeScene& scene, const LoopResult& loop, const RunFigures& f, int nodes, int threads,
@@ -199,7 +252,7 @@ void writeSummary(const TubeScene& scene, const LoopResult& loop, const RunFigur
         s.number("energy_relative_change", e0 != 0.0 ? (e1 - e0) / std::abs(e0) : 0.0);
     }
     s.number("orthogonality_defect", f.orthogonality);
-    s.number("wall_seconds", f.wall).number("node_steps_per_second", f.nodeStepsPerSecond);
+    s.integer("rod_steps", f.rodSteps).number("wall_seconds", f.wall).number("node_steps_per_second", f.nodeStepsPerSecond);
     s.write(file);
 }
 
@@ -217,14 +270,7 @@ void resolveFlow(const TubeScene& scene, RunFigures& f)
     if (!std::isfinite(f.flowSpeed))
         throw InputError(scene.file + ": key 'dynamics.flow.critical_fraction': the tube has no critical speed below "
                                       "stability.speed_max = " + jsonNumber(st.speedMax));
-    const std::vector<Mode> spectrum = linear.spectrum(f.uDimensionless);
-    f.linearGrowth = -INFINITY;
-    for (const Mode& m : spectrum)
-        if (m.growth() > f.linearGrowth)
-        {
-            f.linearGrowth = m.growth();
-            f.linearFrequency = std::abs(m.frequency());
-        }
+    f.spectrum = linear.spectrum(f.uDimensionless);
 }
 
 /*! --check of a time run: rotations orthogonal to round-off; with no flow and no gravity nothing pumps energy in,
@@ -261,10 +307,7 @@ int runOnRankZero(const TubeScene& scene, bool check)
     setup.right = scene.right;
     setup.flowSpeed = f.flowSpeed;
     TubeDynamics rod(rodConstants(scene.physical, d), setup);
-    rod.setVelocity([&](double s) {
-        const double w = perturbationShape(scene, s);
-        return std::array<double, 3>{d.tipVelocity[0] * w, d.tipVelocity[1] * w, d.tipVelocity[2] * w};
-    });
+    perturb(rod, scene);
     const std::string dir = scene.outputDirectory;
     std::filesystem::create_directories(dir);
     writeTubeScene(scene, dir + "/scene.yaml");
@@ -273,14 +316,16 @@ int runOnRankZero(const TubeScene& scene, bool check)
     control.endTime = d.endTime;
     control.outputInterval = d.outputInterval;
     control.maxRetries = 0;
+    control.initialTimeStep = system.loopStep(); // no ramp: the step is fixed (loopStep)
+    control.stepsCsv = std::getenv("UNILAG_TUBE_STEPS") ? dir + "/steps.csv" : "";
     const auto start = std::chrono::steady_clock::now();
     const LoopResult loop = runTimeLoop(system, control, MPI_COMM_SELF);
     f.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    f.nodeStepsPerSecond = loop.wallSeconds > 0 ? double(loop.state.steps) * rod.nodes() / loop.wallSeconds : 0.0;
-    const RunFigures measured = measure(scene, system.tip, rod);
-    f.fit = measured.fit;
-    f.outOfPlane = measured.outOfPlane;
-    f.orthogonality = measured.orthogonality;
+    f.rodSteps = loop.state.steps * TubeTimeSystem::substeps();
+    f.nodeStepsPerSecond = loop.wallSeconds > 0 ? double(f.rodSteps) * rod.nodes() / loop.wallSeconds : 0.0;
+    f.fit = fitTip(system.tip, d.fitFrom * d.endTime, f.outOfPlane);
+    pickLinearMode(f.spectrum, f.fit.ok ? f.fit.frequency * scene.physical.timeScale() : 0.0, f);
+    f.orthogonality = rod.orthogonalityDefect();
     writeTipCsv(system.tip, d.tipRows, dir + "/tip.csv");
     writeSummary(scene, loop, f, rod.nodes(), Kokkos::DefaultExecutionSpace().concurrency(), dir + "/summary.json");
     if (!loop.failure.empty())
@@ -290,7 +335,7 @@ int runOnRankZero(const TubeScene& scene, bool check)
     }
     std::printf("unilag: %s: tube dynamics, %d segments, U = %.4g m/s (u/u_cf = %.4g), %ld steps in %.3g s, "
                 "growth rate %.4g (linear %.4g) per tau; output in %s\n",
-                scene.name.c_str(), d.segments, f.flowSpeed, f.uDimensionless / f.uCritical, loop.state.steps, f.wall,
+                scene.name.c_str(), d.segments, f.flowSpeed, f.uDimensionless / f.uCritical, f.rodSteps, f.wall,
                 f.fit.ok ? f.fit.growthRate * scene.physical.timeScale() : NAN, f.linearGrowth, dir.c_str());
     if (!check)
         return ExitOk;

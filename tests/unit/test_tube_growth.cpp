@@ -45,6 +45,26 @@ TEST(TubeGrowthFit, PlanarGrowthAndFrequency)
     }
 }
 
+//! y = e^(sigma t) sin(omega t) + a ripple at 23 omega of 1/2000 of the first amplitude, which gives |y| many
+//! spurious local maxima once the oscillation has decayed below the ripple's size near zero.
+TEST(TubeGrowthFit, SignedFitIgnoresTheRipple)
+{
+    for (double sigma : {0.4, -0.4})
+    {
+        std::vector<double> t, y;
+        for (double x = 0.0; x <= 8.0; x += 2e-5)
+        {
+            t.push_back(x);
+            y.push_back(std::exp(sigma * x) * std::sin(20.0 * x) + 0.0005 * std::sin(460.0 * x));
+        }
+        const auto fit = unilag::tube::fitGrowthSigned(t, y, 1.0);
+        ASSERT_TRUE(fit.ok);
+        EXPECT_NEAR(fit.peaks, 2 * 20.0 * 7.0 / (2 * M_PI), 2.0); // two per period over t in [1, 8]
+        EXPECT_NEAR(fit.growthRate, sigma, 0.01 * std::abs(sigma)) << "sigma " << sigma;
+        EXPECT_NEAR(fit.frequency, 20.0, 0.02);
+    }
+}
+
 TEST(TubeGrowthFit, WhirlWithoutPeaks)
 {
     Series s;
