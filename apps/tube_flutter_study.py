@@ -7,11 +7,15 @@ section) at several flow speeds u / u_cf (dynamics.flow.critical_fraction), then
                u - u_cf
 A run counts as saturated when its tip amplitude over the last tenth of the run is within 5% of that over the
 tenth before. Usage:
-  tube_flutter_study.py UNILAG SCENE OUT --fractions 0.98,1.02,1.1,1.2 [--end-time T] [--set key=value ...]
+  tube_flutter_study.py UNILAG SCENE OUT --fractions 0.98,1.02,1.1,1.2 [--end-time T] [--fit-from F]
+                        [--set key=value ...]
+The growth rate is fitted on the linear phase (tip amplitude below dynamics.fit_below = 1% of the length by
+default), the amplitude on the last tenth of the run.
 """
 import argparse
 import csv
 import json
+import math
 import os
 import subprocess
 import sys
@@ -38,12 +42,15 @@ def run_one(args, fraction):
            "dynamics.flow.critical_fraction=%r" % fraction]
     if args.end_time:
         cmd += ["--set", "dynamics.end_time=%r" % args.end_time]
+    cmd += ["--set", "dynamics.fit_from=%r" % args.fit_from]
     for s in args.set:
         cmd += ["--set", s]
     subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
     with open(os.path.join(folder, "summary.json")) as f:
         s = json.load(f)
     amplitude, ratio = tip_saturation(folder)
+    for key in ("growth_rate_dimensionless", "frequency_dimensionless"):  # null: no fit (too few peaks)
+        s[key] = float("nan") if s[key] is None else s[key]
     return {
         "u_over_u_cf": s["u_over_u_cf"], "u": s["u"], "u_cf_linear": s["u_cf_linear"],
         "growth_rate": s["growth_rate_dimensionless"], "linear_growth_rate": s["linear_growth_rate_dimensionless"],
@@ -68,6 +75,12 @@ def plot(rows, path):
     if rest:
         b.plot([r["u"] - r["u_cf_linear"] for r in rest], [r["tip_amplitude_m"] for r in rest], "x",
                color="0.5", label="still growing at the end")
+    near = [r for r in sat if r["u"] > r["u_cf_linear"]][:2]
+    if near:  # a supercritical Hopf bifurcation: amplitude ~ c sqrt(u - u_cf) near onset
+        c = sum(r["tip_amplitude_m"] / math.sqrt(r["u"] - r["u_cf_linear"]) for r in near) / len(near)
+        top = max(r["u"] - r["u_cf_linear"] for r in sat)
+        xs = [top * i / 100 for i in range(101)]
+        b.plot(xs, [c * math.sqrt(x) for x in xs], "--", color="0.5", label="c sqrt(u - u_cf), near onset")
     b.set_xlabel("u - u_cf")
     b.set_ylabel("tip amplitude (m)")
     b.legend()
@@ -82,6 +95,8 @@ def main():
     p.add_argument("out")
     p.add_argument("--fractions", default="0.98,1.02,1.1,1.2,1.3")
     p.add_argument("--end-time", type=float, default=None)
+    p.add_argument("--fit-from", type=float, default=0.05,
+                   help="fraction of the run after which the growth is fitted (below dynamics.fit_below of L)")
     p.add_argument("--set", action="append", default=[])
     args = p.parse_args()
     os.makedirs(args.out, exist_ok=True)

@@ -47,7 +47,8 @@ GrowthFit fitPeaks(const std::vector<double>& peakTime, const std::vector<double
 
 } // namespace
 
-GrowthFit fitGrowthSigned(const std::vector<double>& t, const std::vector<double>& y, double from)
+GrowthFit fitGrowthSigned(const std::vector<double>& t, const std::vector<double>& y, double from,
+                          double maxAmplitude)
 {
     std::vector<double> peakTime, logPeak;
     int sign = 0;
@@ -79,15 +80,22 @@ GrowthFit fitGrowthSigned(const std::vector<double>& t, const std::vector<double
         peakTime.erase(peakTime.begin());
         logPeak.erase(logPeak.begin());
     }
-    return fitPeaks(peakTime, logPeak);
+    std::vector<double> keptTime, keptLog;
+    for (std::size_t i = 0; i < peakTime.size(); ++i)
+        if (logPeak[i] <= std::log(maxAmplitude))
+        {
+            keptTime.push_back(peakTime[i]);
+            keptLog.push_back(logPeak[i]);
+        }
+    return fitPeaks(keptTime, keptLog);
 }
 
-GrowthFit fitGrowth(const std::vector<double>& t, const std::vector<double>& a, double from)
+GrowthFit fitGrowth(const std::vector<double>& t, const std::vector<double>& a, double from, double maxAmplitude)
 {
     GrowthFit fit;
     std::vector<double> peakTime, logPeak;
     for (std::size_t i = 1; i + 1 < t.size(); ++i)
-        if (t[i] >= from && a[i] > a[i - 1] && a[i] >= a[i + 1] && a[i] > 0.0)
+        if (t[i] >= from && a[i] > a[i - 1] && a[i] >= a[i + 1] && a[i] > 0.0 && a[i] <= maxAmplitude)
         {
             peakTime.push_back(t[i]);
             logPeak.push_back(std::log(a[i]));
@@ -98,7 +106,7 @@ GrowthFit fitGrowth(const std::vector<double>& t, const std::vector<double>& a, 
     // a whirl: the distance from the axis has no oscillation to speak of; fit its logarithm directly
     std::vector<double> tw, lw;
     for (std::size_t i = 0; i < t.size(); ++i)
-        if (t[i] >= from && a[i] > 0.0)
+        if (t[i] >= from && a[i] > 0.0 && a[i] <= maxAmplitude)
         {
             tw.push_back(t[i]);
             lw.push_back(std::log(a[i]));

@@ -7,6 +7,7 @@
  */
 #pragma once
 
+#include <cmath>
 #include <vector>
 
 namespace unilag::tube
@@ -18,16 +19,19 @@ struct GrowthFit
     double growthRate = 0.0;  //!< sigma, per unit of t
     double frequency = 0.0;   //!< omega (rad per unit of t), 0 when the fit is not over peaks
     int peaks = 0;            //!< peaks in the window
-    double lastPeak = 0.0;    //!< the last peak's amplitude (the limit-cycle amplitude once it saturates)
+    double lastPeak = 0.0;    //!< the last fitted peak's amplitude
     double residual = 0.0;    //!< rms of the log fit (small: one exponential)
 };
 
-//! The fit of amplitude(t) over t >= from. t increasing; amplitude >= 0 (a distance).
-GrowthFit fitGrowth(const std::vector<double>& t, const std::vector<double>& amplitude, double from);
+/*! The fit of amplitude(t) over t >= from, on the peaks not above maxAmplitude (the linear phase of a run that
+ *  saturates later into a limit cycle). t increasing; amplitude >= 0 (a distance). */
+GrowthFit fitGrowth(const std::vector<double>& t, const std::vector<double>& amplitude, double from,
+                    double maxAmplitude = INFINITY);
 
 /*! The fit of a signed planar oscillation y(t) over t >= from: one peak per half cycle, the largest |y| between
  *  two changes of sign, where a change of sign counts only once |y| exceeds a tenth of the half cycle's peak (so
  *  that a small ripple of the higher modes riding on y near zero makes no extra half cycles). */
-GrowthFit fitGrowthSigned(const std::vector<double>& t, const std::vector<double>& y, double from);
+GrowthFit fitGrowthSigned(const std::vector<double>& t, const std::vector<double>& y, double from,
+                          double maxAmplitude = INFINITY);
 
 } // namespace unilag::tube

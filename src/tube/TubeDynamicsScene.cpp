@@ -56,6 +56,7 @@ DynamicsSettings readDynamics(ConfigNode& d)
     s.fitFrom = d.nonNegative("fit_from", s.fitFrom);
     if (s.fitFrom >= 1.0)
         d.fail("fit_from", "must be a fraction of the run in [0, 1), found " + num(s.fitFrom));
+    s.fitBelow = d.positive("fit_below", s.fitBelow);
     d.rejectUnknown();
     return s;
 }

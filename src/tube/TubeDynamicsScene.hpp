@@ -28,6 +28,7 @@ struct DynamicsSettings
     double outputInterval = 0.0;     //!< s between XDMF dumps (0: the first and last state only)
     int tipRows = 20000;             //!< at most this many rows in tip.csv (every step is kept for the fit)
     double fitFrom = 0.3;            //!< the growth rate is fitted on the tip's peaks after this fraction of the run
+    double fitBelow = 0.01;          //!< ... and below this tip amplitude / length (the linear phase)
 };
 
 /*! Reads `dynamics:` of a scene whose physical tube is known (the caller checks that); every key is validated.

@@ -187,11 +187,12 @@ struct RunFigures
     double outOfPlane = 0, orthogonality = 0, wall = 0, nodeStepsPerSecond = 0;
     long rodSteps = 0;          //!< steps of the splitting (the loop's steps times its substeps)
     std::vector<Mode> spectrum; //!< the linear model's at the run's speed
+    double finalAmplitude = 0;  //!< the tip's largest distance from the axis over the last tenth of the run
 };
 
 /*! The fit of the tip's motion: a planar run (one transverse component under a tenth of the other) on its signed
  *  displacement, a 3D run on its distance from the axis. */
-GrowthFit fitTip(const TipSeries& tip, double from, double& outOfPlane)
+GrowthFit fitTip(const TipSeries& tip, double from, double below, double& outOfPlane)
 {
     double maxY = 0.0, maxZ = 0.0;
     for (std::size_t i = 0; i < tip.t.size(); ++i)
@@ -201,10 +202,21 @@ GrowthFit fitTip(const TipSeries& tip, double from, double& outOfPlane)
     }
     outOfPlane = maxY + maxZ > 0.0 ? maxZ / std::max(maxY, maxZ) : 0.0;
     if (maxZ <= 0.1 * maxY)
-        return fitGrowthSigned(tip.t, tip.y, from);
+        return fitGrowthSigned(tip.t, tip.y, from, below);
     if (maxY <= 0.1 * maxZ)
-        return fitGrowthSigned(tip.t, tip.z, from);
-    return fitGrowth(tip.t, tip.distance, from);
+        return fitGrowthSigned(tip.t, tip.z, from, below);
+    return fitGrowth(tip.t, tip.distance, from, below);
+}
+
+//! The tip's largest distance from the axis over the last tenth of the run (the limit cycle's amplitude, if any).
+double lastTenthAmplitude(const TipSeries& tip)
+{
+    double amplitude = 0.0;
+    const double from = 0.9 * tip.t.back();
+    for (std::size_t i = 0; i < tip.t.size(); ++i)
+        if (tip.t[i] >= from)
+            amplitude = std::max(amplitude, tip.distance[i]);
+    return amplitude;
 }
 
 /*! The linear mode the tip shows: the one nearest the fitted frequency (below u_cf the largest growth rate is an
@@ -243,7 +255,7 @@ void writeSummary(const TubeScene& scene, const LoopResult& loop, const RunFigur
     s.number("linear_growth_rate_dimensionless", f.linearGrowth);
     s.number("frequency_dimensionless", f.fit.ok ? f.fit.frequency * T : NAN);
     s.number("linear_frequency_dimensionless", f.linearFrequency);
-    s.integer("tip_peaks_fitted", f.fit.peaks).number("tip_amplitude", f.fit.lastPeak);
+    s.integer("tip_peaks_fitted", f.fit.peaks).number("tip_amplitude", f.finalAmplitude);
     s.number("out_of_plane_ratio", f.outOfPlane);
     if (loop.initialTotals.size() == 7 && loop.finalTotals.size() == 7)
     {
@@ -323,7 +335,8 @@ int runOnRankZero(const TubeScene& scene, bool check)
     f.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     f.rodSteps = loop.state.steps * TubeTimeSystem::substeps();
     f.nodeStepsPerSecond = loop.wallSeconds > 0 ? double(f.rodSteps) * rod.nodes() / loop.wallSeconds : 0.0;
-    f.fit = fitTip(system.tip, d.fitFrom * d.endTime, f.outOfPlane);
+    f.fit = fitTip(system.tip, d.fitFrom * d.endTime, d.fitBelow * scene.physical.length, f.outOfPlane);
+    f.finalAmplitude = lastTenthAmplitude(system.tip);
     pickLinearMode(f.spectrum, f.fit.ok ? f.fit.frequency * scene.physical.timeScale() : 0.0, f);
     f.orthogonality = rod.orthogonalityDefect();
     writeTipCsv(system.tip, d.tipRows, dir + "/tip.csv");

@@ -65,6 +65,22 @@ TEST(TubeGrowthFit, SignedFitIgnoresTheRipple)
     }
 }
 
+//! A flutter that saturates into a limit cycle of amplitude 0.1: below 0.01 the fit sees the linear growth only.
+TEST(TubeGrowthFit, SaturationIsLeftOutBelowTheCap)
+{
+    std::vector<double> t, y;
+    for (double x = 0.0; x <= 20.0; x += 1e-4)
+    {
+        t.push_back(x);
+        y.push_back(std::min(1e-4 * std::exp(0.5 * x), 0.1) * std::sin(20.0 * x));
+    }
+    const auto capped = unilag::tube::fitGrowthSigned(t, y, 0.5, 0.01);
+    ASSERT_TRUE(capped.ok);
+    EXPECT_NEAR(capped.growthRate, 0.5, 2e-3);
+    const auto whole = unilag::tube::fitGrowthSigned(t, y, 0.5);
+    EXPECT_LT(whole.growthRate, 0.4); // the plateau pulls an uncapped fit down
+}
+
 TEST(TubeGrowthFit, WhirlWithoutPeaks)
 {
     Series s;
