@@ -17,7 +17,7 @@
 namespace unilag
 {
 
-/*! Runs the scene's dynamics (the scene is read and its output folder checked). check: energy kept (no flow and
+/*! Runs the scene's dynamics (the scene is read and its output folder checked). check: energy kept (no flow,
  *  no gravity), rotations orthogonal, state finite. Returns the exit code (ExitOk, ExitCheck, ExitUnstable). */
 int runTubeDynamics(const tube::TubeScene& scene, bool check, MPI_Comm comm);
 
