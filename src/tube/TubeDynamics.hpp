@@ -4,8 +4,8 @@
  *  splitting (kick / exact drift / kick). Kernels in kernels/unilag/TubeRod.hpp; docs/tube-dynamics.md.
  *
  *  Units are the caller's; the rod starts straight along x from the origin, at rest (or in its rest helix when
- *  restCurvature != 0 and both ends are free). The fluid enters at the left end with relative speed U along the
- *  tangent and leaves at the right end, tangentially, with p = 0.
+ *  restCurvature != 0 and both ends are free, or with RodSetup::screwPeriodic). The fluid enters at the left end
+ *  with relative speed U along the tangent and leaves at the right end, tangentially, with p = 0.
  */
 #pragma once
 
