@@ -307,4 +307,58 @@ TEST(TubeDynamicsHelix, ScrewClosureIsConservativeForBroadbandData)
     EXPECT_LT(worst[2], 1e-3);
 }
 
+/*! Noether: the motions that commute with g, translation along and rotation about the helix axis (direction
+ *  a = Omega_rest / |Omega_rest|: cay(h Omega_rest) and so R_g = cay(h Omega_rest)^N turn about it; a point c of
+ *  the axis solves (I - R_g) c = d_perp), keep P.a and (L - c x P).a over the N dynamic nodes to round-off. */
+TEST(TubeDynamicsHelix, ScrewClosureKeepsTheAxialMomenta)
+{
+    const HelixParameters p = helixParameters();
+    const int N = 40;
+    TubeDynamics tube(rodConstants(p), screwSetup(N));
+    const Mat R = tube.frame(N);
+    const Vec d = tube.position(N);
+    const Vec a{std::cos(p.helixAngle), std::sin(p.helixAngle), 0.0};
+    EXPECT_LT(std::abs(R[0] * a[0] + R[1] * a[1] + R[2] * a[2] - a[0]) +
+                  std::abs(R[3] * a[0] + R[4] * a[1] + R[5] * a[2] - a[1]),
+              1e-14)
+        << "R_g turns about a";
+    // c = x e + y f in the plane normal to a (e, f, a orthonormal): 2x2 solve of (I - R) c = d - (d.a) a.
+    const Vec e{0, 0, 1}, f{a[1], -a[0], 0};
+    auto apply = [&](const Vec& x) { // (I - R) x
+        Vec y{};
+        for (int i = 0; i < 3; ++i)
+            y[i] = x[i] - (R[3 * i] * x[0] + R[3 * i + 1] * x[1] + R[3 * i + 2] * x[2]);
+        return y;
+    };
+    auto dot = [](const Vec& u, const Vec& v) { return u[0] * v[0] + u[1] * v[1] + u[2] * v[2]; };
+    const Vec ie = apply(e), jf = apply(f);
+    const double m00 = dot(e, ie), m01 = dot(e, jf), m10 = dot(f, ie), m11 = dot(f, jf);
+    const double b0 = dot(e, d), b1 = dot(f, d), det = m00 * m11 - m01 * m10;
+    const double x = (b0 * m11 - m01 * b1) / det, y = (m00 * b1 - m10 * b0) / det;
+    const Vec c{x * e[0] + y * f[0], x * e[1] + y * f[1], x * e[2] + y * f[2]};
+    auto axial = [&](double& pa, double& la) {
+        const Vec P = tube.linearMomentum(), L = tube.angularMomentum();
+        const Vec cxP{c[1] * P[2] - c[2] * P[1], c[2] * P[0] - c[0] * P[2], c[0] * P[1] - c[1] * P[0]};
+        pa = dot(P, a);
+        la = dot(L, a) - dot(cxP, a);
+    };
+    tube.setVelocity([](double s) { return Vec{0.3 + std::sin(2 * M_PI * s), 0.2 * std::cos(6 * M_PI * s), -0.1}; });
+    tube.setSpin([](double s) { return Vec{1.0 + s, std::sin(4 * M_PI * s), 0.5}; });
+    double pa0, la0, pa1, la1;
+    axial(pa0, la0);
+    const Vec P0 = tube.linearMomentum();
+    tube.run(0.5 * tube.stableStep(), 4000);
+    axial(pa1, la1);
+    const Vec P1 = tube.linearMomentum();
+    const Vec dPv{P1[0] - P0[0], P1[1] - P0[1], P1[2] - P0[2]};
+    const double scaleP = std::sqrt(dot(P0, P0)), dP = std::sqrt(dot(dPv, dPv));
+    std::printf("axial momenta over 4000 steps: P.a %.6f -> %.2e change, L_axis %.6f -> %.2e change; |P| itself "
+                "changes by %.2e (relative)\n",
+                pa0, std::abs(pa1 - pa0), la0, std::abs(la1 - la0), dP / scaleP);
+    EXPECT_LT(std::abs(pa1 - pa0), 1e-13 * scaleP);
+    EXPECT_LT(std::abs(la1 - la0), 1e-13 * (scaleP + std::abs(la0)));
+    EXPECT_GT(dP / scaleP, 1e-3) << "the other components are not conserved (the closure is a real constraint)";
+    EXPECT_TRUE(tube.finite());
+}
+
 } // namespace
