@@ -229,7 +229,11 @@ KOKKOS_INLINE_FUNCTION void kickNode(int j, int flags, double tau, const V3& f, 
 }
 
 /*! Node pass: the two adjacent segments' loads plus gravity (no atomics: each node reads, nobody adds),
- *  stored, and (kick) applied at once when nothing else (the fluid) needs the stored load first. */
+ *  stored, and (kick) applied at once when nothing else (the fluid) needs the stored load first.
+ *  Screw-periodic rods (`screw`): nodes 0..N-1 are launched; the last segment ends at node N, the image
+ *  (R_g Lambda_0, R_g r_0 + d_g) of node 0, so node 0 also takes that segment's right load: the force pulled
+ *  back, -R_g^T F_{N-1} (delta r_N = R_g delta r_0), the body torque as it is (Lambda_N = R_g Lambda_0 moves by the
+ *  same right perturbation as Lambda_0). */
 struct NodeGather
 {
     Vec3View segForce, segTorqueLeft, segTorqueRight, force, torque, velocity, spin;
@@ -238,6 +242,8 @@ struct NodeGather
     int leftFlags, rightFlags, segments;
     double tau;
     bool kick;
+    bool screw = false;
+    M3 screwRotation = M3{{{1, 0, 0}, {0, 1, 0}, {0, 0, 1}}}; //!< R_g
     KOKKOS_INLINE_FUNCTION void operator()(int j) const
     {
         V3 f, t;
@@ -255,6 +261,11 @@ struct NodeGather
                 f[a] -= segForce(j - 1, a);
                 t[a] += segTorqueRight(j - 1, a);
             }
+        }
+        if (screw && j == 0)
+        {
+            f = f - mulT(screwRotation, loadV3(segForce, segments - 1));
+            t = t + loadV3(segTorqueRight, segments - 1);
         }
         storeV3(force, j, f);
         storeV3(torque, j, t);
@@ -346,6 +357,28 @@ struct CoriolisKick
         if (last && !rotationFixed(flags))
             for (int a = 0; a < 3; ++a)
                 spin(j, a) += tau * torque(j, a);
+    }
+};
+
+/*! Screw-periodic closure (one thread): node N becomes the image of node 0 under the helix's screw motion
+ *  g = (R_g, d_g): Lambda_N = R_g Lambda_0, r_N = R_g r_0 + d_g, v_N = R_g v_0, pi_N = pi_0 (body). */
+struct ScrewImage
+{
+    Mat3View lam;
+    Vec3View position, velocity, spin;
+    M3 rotation;
+    V3 shift;
+    int segments;
+    KOKKOS_INLINE_FUNCTION void operator()(int) const
+    {
+        const int n = segments;
+        const M3 image = mul(rotation, loadM3(lam, 0));
+        for (int a = 0; a < 3; ++a)
+            for (int b = 0; b < 3; ++b)
+                lam(n, a, b) = image.a[a][b];
+        storeV3(position, n, mul(rotation, loadV3(position, 0)) + shift);
+        storeV3(velocity, n, mul(rotation, loadV3(velocity, 0)));
+        storeV3(spin, n, loadV3(spin, 0));
     }
 };
 

@@ -5,107 +5,12 @@
 #include <stdexcept>
 #include <utility>
 
-#include "unilag/TubeRod.hpp"
+#include "tube/TubeDynamicsState.hpp"
 
 namespace unilag::tube
 {
 
-using namespace unilag::rod;
-
-namespace
-{
-
-int endFlags(EndCondition e)
-{
-    switch (e)
-    {
-    case EndCondition::Clamped:
-        return 3;
-    case EndCondition::Pinned:
-        return 1;
-    case EndCondition::Free:
-        return 0;
-    }
-    return 0;
-}
-
-//! parallel_for on the default execution space, or on Kokkos::Serial (small rods, host backends).
-template <class Functor>
-void forEach(const char* name, int n, bool serial, const Functor& f)
-{
-#if defined(KOKKOS_ENABLE_SERIAL)
-    if constexpr (Kokkos::SpaceAccessibility<Kokkos::Serial, MemSpace>::accessible)
-        if (serial)
-        {
-            Kokkos::parallel_for(name, Kokkos::RangePolicy<Kokkos::Serial>(0, n), f);
-            return;
-        }
-#endif
-    (void)serial;
-    Kokkos::parallel_for(name, Kokkos::RangePolicy<ExecSpace>(0, n), f);
-}
-
-template <class Functor>
-void scan(const char* name, int n, bool serial, const Functor& f)
-{
-#if defined(KOKKOS_ENABLE_SERIAL)
-    if constexpr (Kokkos::SpaceAccessibility<Kokkos::Serial, MemSpace>::accessible)
-        if (serial)
-        {
-            Kokkos::parallel_scan(name, Kokkos::RangePolicy<Kokkos::Serial>(0, n), f);
-            return;
-        }
-#endif
-    (void)serial;
-    Kokkos::parallel_scan(name, Kokkos::RangePolicy<ExecSpace>(0, n), f);
-}
-
-RodParams rodParams(const RodConstants& c, double h)
-{
-    RodParams p;
-    p.h = h;
-    const double j[3] = {c.torsion, c.bending, c.bending}, l[3] = {c.extension, c.shear, c.shear};
-    for (int a = 0; a < 3; ++a)
-    {
-        p.J[a] = j[a];
-        p.L[a] = l[a];
-        p.rest[a] = c.restCurvature[a];
-    }
-    return p;
-}
-
-M3 identity()
-{
-    M3 m;
-    for (int a = 0; a < 3; ++a)
-        for (int b = 0; b < 3; ++b)
-            m.a[a][b] = a == b ? 1.0 : 0.0;
-    return m;
-}
-
-//! The minimal rotation taking unit vector u to unit vector w (exactly orthogonal in exact arithmetic).
-M3 alignRotation(const V3& u, const V3& w)
-{
-    const V3 k = cross(u, w);
-    const double c = dot(u, w);
-    const double f = 1.0 / (1.0 + c);
-    M3 q;
-    for (int a = 0; a < 3; ++a)
-        for (int b = 0; b < 3; ++b)
-            q.a[a][b] = (a == b ? c : 0.0) + f * k[a] * k[b];
-    q.a[0][1] -= k[2];
-    q.a[1][0] += k[2];
-    q.a[0][2] += k[1];
-    q.a[2][0] -= k[1];
-    q.a[1][2] -= k[0];
-    q.a[2][1] += k[0];
-    return q;
-}
-
-V3 toV3(const std::array<double, 3>& a) { return v3(a[0], a[1], a[2]); }
-std::array<double, 3> toArray(const V3& v) { return {v[0], v[1], v[2]}; }
-
-} // namespace
+using namespace dynamics_detail;
 
 SegmentGradient segmentGradient(const RodConstants& c, double h, const std::array<double, 9>& A,
                                 const std::array<double, 9>& B, const std::array<double, 3>& ra,
@@ -121,168 +26,13 @@ SegmentGradient segmentGradient(const RodConstants& c, double h, const std::arra
     return {s.energy, toArray(s.force), toArray(s.torqueLeft), toArray(s.torqueRight)};
 }
 
-struct TubeDynamics::State
-{
-    RodConstants c;
-    RodSetup setup;
-    RodParams p;
-    int n = 0; // segments
-    double t = 0.0;
-    int leftFlags = 0, rightFlags = 0;
-    bool serial = false; // kernels on Kokkos::Serial (RodSetup::serialBelow)
-    Vec3View r, v, spin, force, torque;
-    Mat3View lam;
-    ScalarView mass, rotary;
-    Vec3View segForce, segTorqueLeft, segTorqueRight, tangent, vA, vB; // vA, vB: Coriolis sweeps
-    ScalarView pressureStep, pressure;
-
-    int flags(int j) const { return j == 0 ? leftFlags : (j == n ? rightFlags : 0); }
-    bool flowing() const { return c.fluidMass > 0.0 && setup.flowSpeed != 0.0; }
-};
-
 TubeDynamics::TubeDynamics(TubeDynamics&&) noexcept = default;
 TubeDynamics& TubeDynamics::operator=(TubeDynamics&&) noexcept = default;
 TubeDynamics::~TubeDynamics() = default;
 
-TubeDynamics::TubeDynamics(const RodConstants& constants, const RodSetup& setup) : s_(std::make_unique<State>())
-{
-    if (setup.segments < 2)
-        throw std::invalid_argument("TubeDynamics: at least 2 segments");
-    if (!(constants.wallRotary > 0.0) || !(constants.wallMass + constants.fluidMass > 0.0))
-        throw std::invalid_argument("TubeDynamics: wallRotary and wallMass + fluidMass must be > 0 (explicit)");
-    State& s = *s_;
-    s.c = constants;
-    s.setup = setup;
-    s.n = setup.segments;
-    const int nn = s.n + 1;
-    const double h = constants.length / s.n;
-    s.p = rodParams(constants, h);
-    s.leftFlags = endFlags(setup.left);
-    s.rightFlags = endFlags(setup.right);
-    s.serial = nn < setup.serialBelow;
-    s.r = Vec3View("tube r", nn);
-    s.v = Vec3View("tube v", nn);
-    s.spin = Vec3View("tube pi", nn);
-    s.force = Vec3View("tube F", nn);
-    s.torque = Vec3View("tube T", nn);
-    s.lam = Mat3View("tube Lambda", nn);
-    s.mass = ScalarView("tube mass", nn);
-    s.rotary = ScalarView("tube rotary", nn);
-    s.segForce = Vec3View("tube segment force", s.n);
-    s.segTorqueLeft = Vec3View("tube segment torque left", s.n);
-    s.segTorqueRight = Vec3View("tube segment torque right", s.n);
-    s.tangent = Vec3View("tube tangent", s.n);
-    s.vA = Vec3View("tube v sweep A", nn);
-    s.vB = Vec3View("tube v sweep B", nn);
-    s.pressureStep = ScalarView("tube dpA", s.n);
-    s.pressure = ScalarView("tube pA", nn);
-
-    auto r = Kokkos::create_mirror_view(s.r);
-    auto lam = Kokkos::create_mirror_view(s.lam);
-    auto mass = Kokkos::create_mirror_view(s.mass);
-    auto rotary = Kokkos::create_mirror_view(s.rotary);
-    // The rest helix (both ends free): Lambda_{j+1} = Lambda_j cay(h Omega_rest) makes Omega_j = Omega_rest
-    // exactly, and Gamma_j = e1 fixes the chord: Lambda_j^T (r_{j+1} - r_j) = 2 h (I + R^T)^{-1} e1.
-    const bool helix = setup.left == EndCondition::Free && setup.right == EndCondition::Free;
-    const V3 restStep = helix ? h * toV3(constants.restCurvature) : v3(0, 0, 0);
-    const M3 R = cayley(restStep);
-    M3 S; // I + R^T
-    for (int a = 0; a < 3; ++a)
-        for (int b = 0; b < 3; ++b)
-            S.a[a][b] = (a == b ? 1.0 : 0.0) + R.a[b][a];
-    const double det = S.a[0][0] * (S.a[1][1] * S.a[2][2] - S.a[1][2] * S.a[2][1]) -
-                       S.a[0][1] * (S.a[1][0] * S.a[2][2] - S.a[1][2] * S.a[2][0]) +
-                       S.a[0][2] * (S.a[1][0] * S.a[2][1] - S.a[1][1] * S.a[2][0]);
-    // first column of S^{-1} (cofactors), times 2h
-    const V3 bodyChord = (2.0 * h / det) * v3(S.a[1][1] * S.a[2][2] - S.a[1][2] * S.a[2][1],
-                                              S.a[1][2] * S.a[2][0] - S.a[1][0] * S.a[2][2],
-                                              S.a[1][0] * S.a[2][1] - S.a[1][1] * S.a[2][0]);
-    M3 frame = identity();
-    V3 pos = v3(0, 0, 0);
-    for (int j = 0; j < nn; ++j)
-    {
-        const double w = (j == 0 || j == s.n) ? 0.5 : 1.0;
-        mass(j) = (constants.wallMass + constants.fluidMass) * h * w;
-        rotary(j) = constants.wallRotary * h * w;
-        for (int a = 0; a < 3; ++a)
-        {
-            r(j, a) = pos[a];
-            for (int b = 0; b < 3; ++b)
-                lam(j, a, b) = frame.a[a][b];
-        }
-        pos = pos + mul(frame, bodyChord);
-        frame = mul(frame, R);
-    }
-    Kokkos::deep_copy(s.r, r);
-    Kokkos::deep_copy(s.lam, lam);
-    Kokkos::deep_copy(s.mass, mass);
-    Kokkos::deep_copy(s.rotary, rotary);
-}
-
 int TubeDynamics::nodes() const { return s_->n + 1; }
 double TubeDynamics::spacing() const { return s_->p.h; }
 double TubeDynamics::time() const { return s_->t; }
-
-void TubeDynamics::setVelocity(const std::function<std::array<double, 3>(double s)>& vel)
-{
-    State& s = *s_;
-    auto v = Kokkos::create_mirror_view(s.v);
-    for (int j = 0; j <= s.n; ++j)
-    {
-        const auto x = vel(j * s.p.h);
-        for (int a = 0; a < 3; ++a)
-            v(j, a) = positionFixed(s.flags(j)) ? 0.0 : x[a];
-    }
-    Kokkos::deep_copy(s.v, v);
-}
-
-void TubeDynamics::setSpin(const std::function<std::array<double, 3>(double s)>& omega)
-{
-    State& s = *s_;
-    auto pi = Kokkos::create_mirror_view(s.spin);
-    auto rotary = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), s.rotary);
-    for (int j = 0; j <= s.n; ++j)
-    {
-        const auto w = omega(j * s.p.h);
-        const double inertia[3] = {2.0 * rotary(j), rotary(j), rotary(j)};
-        for (int a = 0; a < 3; ++a)
-            pi(j, a) = rotationFixed(s.flags(j)) ? 0.0 : inertia[a] * w[a];
-    }
-    Kokkos::deep_copy(s.spin, pi);
-}
-
-void TubeDynamics::displace(const std::function<std::array<double, 3>(double s)>& dr)
-{
-    State& s = *s_;
-    auto r = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), s.r);
-    auto lam = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), s.lam);
-    for (int j = 0; j <= s.n; ++j)
-    {
-        if (positionFixed(s.flags(j)))
-            continue;
-        const auto d = dr(j * s.p.h);
-        for (int a = 0; a < 3; ++a)
-            r(j, a) += d[a];
-    }
-    for (int j = 0; j <= s.n; ++j)
-    {
-        if (rotationFixed(s.flags(j)))
-            continue;
-        const int lo = std::max(j - 1, 0), hi = std::min(j + 1, s.n);
-        V3 t = v3(r(hi, 0) - r(lo, 0), r(hi, 1) - r(lo, 1), r(hi, 2) - r(lo, 2));
-        t = (1.0 / std::sqrt(dot(t, t))) * t;
-        M3 frame;
-        for (int a = 0; a < 3; ++a)
-            for (int b = 0; b < 3; ++b)
-                frame.a[a][b] = lam(j, a, b);
-        const M3 turned = mul(alignRotation(v3(frame.a[0][0], frame.a[1][0], frame.a[2][0]), t), frame);
-        for (int a = 0; a < 3; ++a)
-            for (int b = 0; b < 3; ++b)
-                lam(j, a, b) = turned.a[a][b];
-    }
-    Kokkos::deep_copy(s.r, r);
-    Kokkos::deep_copy(s.lam, lam);
-}
 
 double TubeDynamics::stableStep() const
 {
@@ -307,7 +57,9 @@ void TubeDynamics::kick(double tau)
                       {0, 0, 0}, s.leftFlags, s.rightFlags, s.n, tau, !flow};
     for (int a = 0; a < 3; ++a)
         gather.gravity[a] = s.c.gravity[a];
-    forEach("tube node gather", s.n + 1, s.serial, gather);
+    gather.screw = s.screw;
+    gather.screwRotation = s.screwRotation;
+    forEach("tube node gather", s.dynamicNodes(), s.serial, gather);
     if (!flow)
         return;
     // The pressure takes the accelerations of the elastic load just stored and the velocities at the kick's
@@ -333,8 +85,9 @@ void TubeDynamics::kick(double tau)
 void TubeDynamics::drift(double tau)
 {
     State& s = *s_;
-    forEach("tube drift", s.n + 1, s.serial,
+    forEach("tube drift", s.dynamicNodes(), s.serial,
             Drift{s.r, s.v, s.spin, s.lam, s.rotary, s.leftFlags, s.rightFlags, s.n, tau});
+    closeScrew();
     s.t += tau;
 }
 
@@ -389,7 +142,7 @@ double TubeDynamics::energy() const
     const State& s = *s_;
     const HostState h = hostCopy(s.r, s.v, s.spin, s.lam, s.mass, s.rotary);
     double e = 0.0;
-    for (int j = 0; j <= s.n; ++j)
+    for (int j = 0; j < s.dynamicNodes(); ++j)
     {
         const V3 v = vecAt(h.v, j), pi = vecAt(h.spin, j), r = vecAt(h.r, j);
         e += 0.5 * h.mass(j) * dot(v, v) - h.mass(j) * dot(toV3(s.c.gravity), r);
@@ -405,7 +158,7 @@ std::array<double, 3> TubeDynamics::linearMomentum() const
     const State& s = *s_;
     const HostState h = hostCopy(s.r, s.v, s.spin, s.lam, s.mass, s.rotary);
     V3 p = v3(0, 0, 0);
-    for (int j = 0; j <= s.n; ++j)
+    for (int j = 0; j < s.dynamicNodes(); ++j)
         p = p + h.mass(j) * vecAt(h.v, j);
     return toArray(p);
 }
@@ -415,7 +168,7 @@ std::array<double, 3> TubeDynamics::angularMomentum() const
     const State& s = *s_;
     const HostState h = hostCopy(s.r, s.v, s.spin, s.lam, s.mass, s.rotary);
     V3 l = v3(0, 0, 0);
-    for (int j = 0; j <= s.n; ++j)
+    for (int j = 0; j < s.dynamicNodes(); ++j)
         l = l + h.mass(j) * cross(vecAt(h.r, j), vecAt(h.v, j)) + mul(frameAt(h.lam, j), vecAt(h.spin, j));
     return toArray(l);
 }
@@ -441,6 +194,18 @@ std::array<double, 3> TubeDynamics::position(int node) const
     auto host = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), r);
     return {host(0), host(1), host(2)};
 }
+
+std::array<double, 9> TubeDynamics::frame(int node) const
+{
+    auto m = Kokkos::subview(s_->lam, node, Kokkos::ALL(), Kokkos::ALL());
+    auto host = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), m);
+    std::array<double, 9> f;
+    for (int i = 0; i < 9; ++i)
+        f[i] = host(i / 3, i % 3);
+    return f;
+}
+
+bool TubeDynamics::screwPeriodic() const { return s_->screw; }
 
 std::array<double, 3> TubeDynamics::tip() const { return position(s_->n); }
 

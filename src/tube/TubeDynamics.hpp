@@ -4,8 +4,8 @@
  *  splitting (kick / exact drift / kick). Kernels in kernels/unilag/TubeRod.hpp; docs/tube-dynamics.md.
  *
  *  Units are the caller's; the rod starts straight along x from the origin, at rest (or in its rest helix when
- *  restCurvature != 0 and both ends are free). The fluid enters at the left end with relative speed U along the
- *  tangent and leaves at the right end, tangentially, with p = 0.
+ *  restCurvature != 0 and both ends are free, or with RodSetup::screwPeriodic). The fluid enters at the left end
+ *  with relative speed U along the tangent and leaves at the right end, tangentially, with p = 0.
  */
 #pragma once
 
@@ -40,6 +40,12 @@ struct RodSetup
      *  small rod is tens of microseconds of work, less than the fork/join of its 3 (8 with flow) OpenMP launches,
      *  and far less when the cores are oversubscribed. 0: always the default execution space. */
     int serialBelow = 1024;
+    /*! Screw-periodic ends (left, right ignored; no flow): N segments, the last joining node N-1 to node N :=
+     *  g(node 0), g = (R_g, d_g) the rest helix's own screw motion (its frame and position at s = L, node 0 at
+     *  the identity): Lambda_N = R_g Lambda_0, r_N = R_g r_0 + d_g. The rod starts in its rest helix; node N is
+     *  kept as that image (it is not a degree of freedom). Admits the wavenumbers k = 2 pi n / L in the body
+     *  frame (docs/tube-helix.md 6, docs/tube-dynamics.md). */
+    bool screwPeriodic = false;
 };
 
 //! Host copies, per node: position (3), velocity (3), curvature |Omega| (1), fluid speed U (1),
@@ -75,6 +81,9 @@ class TubeDynamics
     void setSpin(const std::function<std::array<double, 3>(double s)>& omega);
     //! Small displacements; each free rotation turns (minimally) so that its axis 1 follows the new tangent.
     void displace(const std::function<std::array<double, 3>(double s)>& dr);
+    /*! Body-frame perturbation (Sigma, Psi) (s) (docs/tube-helix.md's): r_j += Lambda_j Psi, Lambda_j <-
+     *  Lambda_j exp(Sigma^), nodes whose position / rotation is free. */
+    void perturbBody(const std::function<std::array<double, 6>(double s)>& sigmaPsi);
     //! A safe explicit step: 0.9 x 2/omega_max, omega_max bounded element by element (axial, shear,
     //! bending, torsion, shear-rotation).
     double stableStep() const;
@@ -92,6 +101,8 @@ class TubeDynamics
     double orthogonalityDefect() const;            //!< max_j |Lambda_j^T Lambda_j - I| (max entry)
     std::array<double, 3> tip() const;             //!< position of the last node
     std::array<double, 3> position(int node) const;
+    std::array<double, 9> frame(int node) const; //!< Lambda_j, row-major
+    bool screwPeriodic() const;                  //!< node N is the image of node 0 (RodSetup::screwPeriodic)
     bool finite() const;
     RodFields fields() const;
 
@@ -99,6 +110,7 @@ class TubeDynamics
     struct State;
     void kick(double tau);  //!< loads at the current positions, then v, pi += tau (load)
     void drift(double tau); //!< exact flow of the kinetic energy
+    void closeScrew();      //!< node N := g(node 0) (screw-periodic rods)
     std::unique_ptr<State> s_;
 };
 
