@@ -174,6 +174,14 @@ double TubeGas::energy() const
     return e;
 }
 
+double leadingShockPosition(const GasFields& f, double level)
+{
+    for (size_t j = f.p.size() - 1; j > 0; --j)
+        if (f.p[j - 1] >= level && f.p[j] < level)
+            return f.s[j - 1] + (f.s[j] - f.s[j - 1]) * (f.p[j - 1] - level) / (f.p[j - 1] - f.p[j]);
+    return -1.0;
+}
+
 GasFields TubeGas::fields() const
 {
     const State& s = *s_;

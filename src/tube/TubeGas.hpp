@@ -52,6 +52,10 @@ struct GasFields
     std::vector<double> s, rho, u, p, area;
 };
 
+//! Where p falls through `level` last, scanning from the right end (a right-running shock into lower
+//! pressure), interpolated linearly between cell centres; -1 if it does not.
+double leadingShockPosition(const GasFields& fields, double level);
+
 class TubeGas
 {
   public:

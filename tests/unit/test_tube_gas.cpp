@@ -29,15 +29,6 @@ double densityErrorL1(const GasFields& f, const RiemannExact& exact, double x0, 
     return sum;
 }
 
-//! Where p crosses `level` last, scanning from the right end (the leading shock), by linear interpolation.
-double shockPosition(const GasFields& f, double level)
-{
-    for (size_t j = f.p.size() - 1; j > 0; --j)
-        if (f.p[j - 1] >= level && f.p[j] < level)
-            return f.s[j - 1] + (f.s[j] - f.s[j - 1]) * (f.p[j - 1] - level) / (f.p[j - 1] - f.p[j]);
-    return -1.0;
-}
-
 double slopeLeastSquares(const std::vector<double>& x, const std::vector<double>& y)
 {
     double mx = 0, my = 0;
@@ -120,7 +111,7 @@ TEST(TubeGasShock, MachNumberMatchesTheNormalShockRelation)
         {
             gas.advanceTo(tEnd * k / 8.0);
             t.push_back(gas.time());
-            x.push_back(shockPosition(gas.fields(), 0.5 * (ahead.p + behind.p)));
+            x.push_back(leadingShockPosition(gas.fields(), 0.5 * (ahead.p + behind.p)));
         }
         const double measured = slopeLeastSquares(t, x) / a1;
         std::printf("p2/p1 = %4.1f: M_s measured %.5f, relation %.5f, rel. error %.2e\n", pr, measured, mach,
