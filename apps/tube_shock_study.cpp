@@ -105,10 +105,11 @@ void sodProfile(const std::string& dir)
 }
 
 //! Cell-steps per second of TubeGas::step (two stages of 4 kernels each) on a closed tube with a shock.
-void benchmark(int cells, int steps)
+void benchmark(int cells, int steps, bool serial)
 {
     GasSetup setup;
     setup.cells = cells;
+    setup.serialBelow = serial ? cells + 1 : 0; // the measurement chooses, not the size
     TubeGas gas(setup);
     gas.setState([](double s) { return s < 0.5 ? GasPrimitive{1.0, 0.0, 10.0} : GasPrimitive{0.125, 0.0, 0.1}; });
     const double dt = gas.stableStep();
@@ -120,8 +121,9 @@ void benchmark(int cells, int steps)
         gas.step(dt);
     Kokkos::fence();
     const double seconds = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-    std::printf("bench_tube_gas threads=%d cells=%d steps=%d seconds=%.4f cell_steps_per_s=%.4e\n",
-                Kokkos::DefaultExecutionSpace::concurrency(), cells, steps, seconds, double(cells) * steps / seconds);
+    std::printf("bench_tube_gas threads=%d space=%s cells=%d steps=%d seconds=%.4f cell_steps_per_s=%.4e\n",
+                Kokkos::DefaultExecutionSpace::concurrency(), serial ? "Serial" : Kokkos::DefaultExecutionSpace::name(),
+                cells, steps, seconds, double(cells) * steps / seconds);
 }
 
 } // namespace
@@ -134,6 +136,7 @@ int main(int argc, char* argv[])
     const int steps = argc > 3 ? std::atoi(argv[3]) : 200;
     machStudy(dir);
     sodProfile(dir);
-    benchmark(cells, steps);
+    for (bool serial : {false, true})
+        benchmark(cells, steps, serial);
     return 0;
 }

@@ -37,10 +37,36 @@ EndParams endParams(const GasEnd& e)
     return EndParams{type, e.state.rho, e.state.u, e.state.p};
 }
 
+//! parallel_for on the default execution space, or on Kokkos::Serial (small tubes, host backends).
 template <class Functor>
-void forEach(const char* name, int n, const Functor& f)
+void forEach(const char* name, int n, bool serial, const Functor& f)
 {
+#if defined(KOKKOS_ENABLE_SERIAL)
+    if constexpr (Kokkos::SpaceAccessibility<Kokkos::Serial, MemSpace>::accessible)
+        if (serial)
+        {
+            Kokkos::parallel_for(name, Kokkos::RangePolicy<Kokkos::Serial>(0, n), f);
+            return;
+        }
+#endif
+    (void)serial;
     Kokkos::parallel_for(name, Kokkos::RangePolicy<ExecSpace>(0, n), f);
+}
+
+//! parallel_reduce into `result` (a value or a reducer), on the space forEach would use.
+template <class Functor, class Result>
+void reduce(const char* name, int n, bool serial, const Functor& f, Result&& result)
+{
+#if defined(KOKKOS_ENABLE_SERIAL)
+    if constexpr (Kokkos::SpaceAccessibility<Kokkos::Serial, MemSpace>::accessible)
+        if (serial)
+        {
+            Kokkos::parallel_reduce(name, Kokkos::RangePolicy<Kokkos::Serial>(0, n), f, result);
+            return;
+        }
+#endif
+    (void)serial;
+    Kokkos::parallel_reduce(name, Kokkos::RangePolicy<ExecSpace>(0, n), f, result);
 }
 
 } // namespace
@@ -52,6 +78,7 @@ struct TubeGas::State
     double h = 0, t = 0;
     EndParams left{}, right{};
     int limiter = Limiter::VanLeer;
+    bool serial = false; // kernels on Kokkos::Serial (GasSetup::serialBelow)
     StateView q, scratch, w, flux; // conserved (n), stage (n), primitives with ghosts (n + 4), faces (n + 1)
     ScalarView areaFace, areaCell;
 };
@@ -70,6 +97,7 @@ TubeGas::TubeGas(const GasSetup& setup) : s_(std::make_unique<State>())
     s.h = setup.length / s.n;
     s.left = endParams(setup.left);
     s.right = endParams(setup.right);
+    s.serial = s.n < setup.serialBelow;
     s.limiter = setup.limiter == GasLimiter::MinMod ? Limiter::MinMod : Limiter::VanLeer;
     s.q = StateView("gas q", s.n);
     s.scratch = StateView("gas q stage", s.n);
@@ -125,11 +153,11 @@ void TubeGas::residualUpdate(double alpha, double beta, double dt, bool toScratc
     const double g = s.setup.gamma;
     const StateView in = toScratch ? s.q : s.scratch;
     const StateView out = toScratch ? s.scratch : s.q;
-    forEach("gas primitives", s.n, ToPrimitive{in, s.w, s.areaCell, g});
-    forEach("gas ghosts", 4, FillGhosts{s.w, s.left, s.right, s.n, g});
-    forEach("gas fluxes", s.n + 1,
+    forEach("gas primitives", s.n, s.serial, ToPrimitive{in, s.w, s.areaCell, g});
+    forEach("gas ghosts", 4, s.serial, FillGhosts{s.w, s.left, s.right, s.n, g});
+    forEach("gas fluxes", s.n + 1, s.serial,
             FaceFlux{s.w, s.flux, s.areaFace, s.n, s.limiter, s.left.type == End::Wall, s.right.type == End::Wall, g});
-    forEach("gas update", s.n, CellUpdate{out, s.q, in, s.w, s.flux, s.areaFace, alpha, beta, dt, s.h});
+    forEach("gas update", s.n, s.serial, CellUpdate{out, s.q, in, s.w, s.flux, s.areaFace, alpha, beta, dt, s.h});
 }
 
 void TubeGas::step(double dt)
@@ -142,10 +170,9 @@ void TubeGas::step(double dt)
 double TubeGas::stableStep() const
 {
     State& s = *s_;
-    forEach("gas primitives", s.n, ToPrimitive{s.q, s.w, s.areaCell, s.setup.gamma});
+    forEach("gas primitives", s.n, s.serial, ToPrimitive{s.q, s.w, s.areaCell, s.setup.gamma});
     double speed = 0.0;
-    Kokkos::parallel_reduce("gas max speed", Kokkos::RangePolicy<ExecSpace>(0, s.n),
-                            MaxSignalSpeed{s.w, s.setup.gamma}, Kokkos::Max<double>(speed));
+    reduce("gas max speed", s.n, s.serial, MaxSignalSpeed{s.w, s.setup.gamma}, Kokkos::Max<double>(speed));
     return s.setup.cfl * s.h / speed;
 }
 
@@ -163,14 +190,14 @@ int TubeGas::advanceTo(double tEnd)
 double TubeGas::mass() const
 {
     double m = 0.0;
-    Kokkos::parallel_reduce("gas mass", Kokkos::RangePolicy<ExecSpace>(0, s_->n), Integral{s_->q, 0, s_->h}, m);
+    reduce("gas mass", s_->n, s_->serial, Integral{s_->q, 0, s_->h}, m);
     return m;
 }
 
 double TubeGas::energy() const
 {
     double e = 0.0;
-    Kokkos::parallel_reduce("gas energy", Kokkos::RangePolicy<ExecSpace>(0, s_->n), Integral{s_->q, 2, s_->h}, e);
+    reduce("gas energy", s_->n, s_->serial, Integral{s_->q, 2, s_->h}, e);
     return e;
 }
 
@@ -185,7 +212,7 @@ double leadingShockPosition(const GasFields& f, double level)
 GasFields TubeGas::fields() const
 {
     const State& s = *s_;
-    forEach("gas primitives", s.n, ToPrimitive{s.q, s.w, s.areaCell, s.setup.gamma});
+    forEach("gas primitives", s.n, s.serial, ToPrimitive{s.q, s.w, s.areaCell, s.setup.gamma});
     auto w = Kokkos::create_mirror_view(s.w);
     auto ac = Kokkos::create_mirror_view(s.areaCell);
     Kokkos::deep_copy(w, s.w);

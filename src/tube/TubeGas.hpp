@@ -44,6 +44,10 @@ struct GasSetup
     double cfl = 0.8; //!< of h / max(|u| + a); SSP-RK2 with MUSCL is stable up to 1
     GasLimiter limiter = GasLimiter::VanLeer;
     GasEnd left, right;
+    /*! Tubes with fewer cells run their kernels on Kokkos::Serial when the backend is on the host (as
+     *  RodSetup::serialBelow): a step is 8 launches of microseconds of work each, less than an OpenMP
+     *  fork/join, and far less when the cores are oversubscribed. 0: always the default execution space. */
+    int serialBelow = 1024;
 };
 
 //! Host copies, per cell: centre s, density, velocity, pressure, area.

@@ -126,6 +126,7 @@ TEST(TubeGasConservation, ClosedEndsKeepMassAndEnergy)
     {
         GasSetup setup;
         setup.cells = 200;
+        setup.serialBelow = varyingArea ? 0 : 1024; // both paths: the default execution space and Serial
         TubeGas gas(setup); // walls at both ends
         if (varyingArea)
             gas.setArea([](double s) { return 1.0 + 0.5 * std::sin(2.0 * M_PI * s); });
