@@ -78,7 +78,8 @@ KOKKOS_INLINE_FUNCTION double limitedSlope(double dl, double dr, int limiter)
 KOKKOS_INLINE_FUNCTION Flux hllc(const Prim& l, const Prim& r, double gamma)
 {
     const double al = soundSpeed(l, gamma), ar = soundSpeed(r, gamma);
-    const double sl = Kokkos::Experimental::fmin(l.u - al, r.u - ar), sr = Kokkos::Experimental::fmax(l.u + al, r.u + ar);
+    const double sl = Kokkos::Experimental::fmin(l.u - al, r.u - ar),
+                 sr = Kokkos::Experimental::fmax(l.u + al, r.u + ar);
     const double el = l.p / (gamma - 1.0) + 0.5 * l.rho * l.u * l.u; // energy per volume
     const double er = r.p / (gamma - 1.0) + 0.5 * r.rho * r.u * r.u;
     Flux f;

@@ -78,8 +78,8 @@ GasPrimitive RiemannExact::sampleSide(double x, const GasPrimitive& w0, double s
         else // inside the fan
         {
             const double c = 2.0 / (g + 1.0) + (g - 1.0) / ((g + 1.0) * a) * (w.u - x);
-            out = GasPrimitive{w.rho * std::pow(c, 2.0 / (g - 1.0)),
-                               2.0 / (g + 1.0) * (a + 0.5 * (g - 1.0) * w.u + x), w.p * std::pow(c, 2.0 * g / (g - 1.0))};
+            out = GasPrimitive{w.rho * std::pow(c, 2.0 / (g - 1.0)), 2.0 / (g + 1.0) * (a + 0.5 * (g - 1.0) * w.u + x),
+                               w.p * std::pow(c, 2.0 * g / (g - 1.0))};
         }
     }
     out.u *= sign;
