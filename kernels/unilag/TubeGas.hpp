@@ -42,7 +42,7 @@ struct End
     static constexpr int Transmissive = 1;   //!< zero gradient: supersonic outflow, or waves leaving
     static constexpr int FixedState = 2;     //!< (rho, u, p) given: supersonic inflow
     static constexpr int PressureOutlet = 3; //!< subsonic outflow at given p: entropy, outgoing invariant kept
-    static constexpr int SubsonicInflow = 4; //!< (rho, u) given, p from the outgoing Riemann invariant
+    static constexpr int SubsonicInflow = 4; //!< from a reservoir at rest (rho0, p0): entropy, enthalpy kept
 };
 struct EndParams
 {
@@ -107,6 +107,26 @@ KOKKOS_INLINE_FUNCTION Flux hllc(const Prim& l, const Prim& r, double gamma)
     return f;
 }
 
+/*! Subsonic inflow from a reservoir at rest (b.rho, b.p): the entropy and the total enthalpy a0^2/(g-1) of the
+ *  reservoir and the outgoing invariant of the interior fix the inflow state. (Imposing rho and u instead is
+ *  the textbook choice, but a fixed-velocity inlet with mean flow Mach M reflects acoustic energy with gain
+ *  ((1 + M)/(1 - M))^2: against a pressure outlet, the nozzle of docs/tube-gas.md grew instead of settling.)
+ *  Works in the inward frame v = -sign u; if the interior pulls outward, v = 0 (the reservoir closes). */
+KOKKOS_INLINE_FUNCTION Prim reservoirInflow(const EndParams& b, const Prim& in, double sign, double gamma)
+{
+    const double g1 = gamma - 1.0;
+    const double a0 = Kokkos::Experimental::sqrt(gamma * b.p / b.rho);
+    const double jv = -sign * in.u - 2.0 * soundSpeed(in, gamma) / g1; // v - 2a/(g-1), leaving the tube
+    // a = (g-1)/2 (v - jv) and a^2/(g-1) + v^2/2 = a0^2/(g-1): a quadratic c2 v^2 + c1 v + c0 = 0
+    const double c2 = 0.25 * (g1 + 2.0), c1 = -0.5 * g1 * jv, c0 = 0.25 * g1 * jv * jv - a0 * a0 / g1;
+    const double disc = Kokkos::Experimental::fmax(c1 * c1 - 4.0 * c2 * c0, 0.0);
+    const double v = Kokkos::Experimental::fmax((-c1 + Kokkos::Experimental::sqrt(disc)) / (2.0 * c2), 0.0);
+    const double a = Kokkos::Experimental::fmin(0.5 * g1 * (v - jv), a0);
+    const double ratio = a / a0;
+    return Prim{b.rho * Kokkos::Experimental::pow(ratio, 2.0 / g1), -sign * v,
+                b.p * Kokkos::Experimental::pow(ratio, 2.0 * gamma / g1)};
+}
+
 //! Ghost state beyond an end, from the adjacent interior state `in`; `left` says which end (the outgoing
 //! characteristic is u + a at the right end, u - a at the left end).
 KOKKOS_INLINE_FUNCTION Prim ghostState(const EndParams& b, const Prim& in, bool left, double gamma)
@@ -127,13 +147,7 @@ KOKKOS_INLINE_FUNCTION Prim ghostState(const EndParams& b, const Prim& in, bool 
         return Prim{rho, in.u + sign * 2.0 * (ai - ab) / g1, b.p};
     }
     case End::SubsonicInflow:
-    {
-        const double invariant = in.u + sign * 2.0 * soundSpeed(in, gamma) / g1;
-        double ab = sign * 0.5 * g1 * (invariant - b.u);
-        ab = ab > 0.0 ? ab : 0.0;
-        const double p = b.rho * ab * ab / gamma;
-        return Prim{b.rho, b.u, p > 1e-12 * in.p ? p : 1e-12 * in.p};
-    }
+        return reservoirInflow(b, in, sign, gamma);
     default: // Transmissive
         return in;
     }

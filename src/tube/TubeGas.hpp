@@ -21,13 +21,13 @@ enum class GasEndType
     Transmissive,   //!< zero gradient: supersonic outflow, or waves leaving
     FixedState,     //!< all of (rho, u, p) imposed: supersonic inflow
     PressureOutlet, //!< subsonic outflow at pressure p (characteristics)
-    SubsonicInflow  //!< (rho, u) imposed, p from the outgoing Riemann invariant
+    SubsonicInflow  //!< from a reservoir at rest: its entropy and total enthalpy, with the outgoing invariant
 };
 
 struct GasEnd
 {
     GasEndType type = GasEndType::Wall;
-    GasPrimitive state; //!< FixedState: all; PressureOutlet: p; SubsonicInflow: rho, u
+    GasPrimitive state; //!< FixedState: all; PressureOutlet: p; SubsonicInflow: the reservoir (rho0, p0)
 };
 
 enum class GasLimiter

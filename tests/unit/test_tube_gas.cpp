@@ -4,6 +4,7 @@
 // and the characteristic ends. Measured figures: docs/tube-gas.md.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdio>
 #include <vector>
@@ -19,6 +20,20 @@ using namespace unilag::tube;
 constexpr double kGamma = 1.4;
 
 GasEnd end(GasEndType type, GasPrimitive state = {}) { return GasEnd{type, state}; }
+
+//! The reservoir at rest from which a flow w expands isentropically (SubsonicInflow's data).
+GasPrimitive reservoirOf(const GasPrimitive& w)
+{
+    const double m2 = w.u * w.u * w.rho / (kGamma * w.p), f = 1.0 + 0.5 * (kGamma - 1.0) * m2;
+    return GasPrimitive{w.rho * std::pow(f, 1.0 / (kGamma - 1.0)), 0.0, w.p * std::pow(f, kGamma / (kGamma - 1.0))};
+}
+
+//! A/A* of isentropic flow at Mach number m.
+double areaRatio(double m)
+{
+    const double g = kGamma;
+    return std::pow(2.0 / (g + 1.0) * (1.0 + 0.5 * (g - 1.0) * m * m), 0.5 * (g + 1.0) / (g - 1.0)) / m;
+}
 
 //! L1 norm of rho - exact over the tube, the exact Riemann solution centred at x0 at time t.
 double densityErrorL1(const GasFields& f, const RiemannExact& exact, double x0, double t, double h)
@@ -126,7 +141,6 @@ TEST(TubeGasConservation, ClosedEndsKeepMassAndEnergy)
     {
         GasSetup setup;
         setup.cells = 200;
-        setup.serialBelow = varyingArea ? 0 : 1024; // both paths: the default execution space and Serial
         TubeGas gas(setup); // walls at both ends
         if (varyingArea)
             gas.setArea([](double s) { return 1.0 + 0.5 * std::sin(2.0 * M_PI * s); });
@@ -138,6 +152,31 @@ TEST(TubeGasConservation, ClosedEndsKeepMassAndEnergy)
                     steps, dm, de);
         EXPECT_LT(std::abs(dm), 1e-13);
         EXPECT_LT(std::abs(de), 1e-10);
+    }
+}
+
+TEST(TubeGasConservation, DefaultSpaceMatchesSerial)
+{
+    // The other tests run on Kokkos::Serial (small tubes); the default space must give the same numbers.
+    // Few steps: OpenMP launches cost milliseconds each when the cores are oversubscribed.
+    GasFields f[2];
+    for (int i = 0; i < 2; ++i)
+    {
+        GasSetup setup;
+        setup.cells = 200;
+        setup.serialBelow = i == 0 ? 0 : 1024;
+        TubeGas gas(setup);
+        gas.setArea([](double s) { return 1.0 + 0.5 * std::sin(2.0 * M_PI * s); });
+        gas.setState([](double s) { return s < 0.3 ? GasPrimitive{1.0, 0.0, 10.0} : GasPrimitive{0.125, 0.0, 0.1}; });
+        for (int k = 0; k < 40; ++k)
+            gas.step(gas.stableStep());
+        f[i] = gas.fields();
+    }
+    for (size_t j = 0; j < f[0].s.size(); ++j)
+    {
+        EXPECT_EQ(f[0].rho[j], f[1].rho[j]);
+        EXPECT_EQ(f[0].u[j], f[1].u[j]);
+        EXPECT_EQ(f[0].p[j], f[1].p[j]);
     }
 }
 
@@ -171,7 +210,7 @@ TEST(TubeGasEnds, UniformFlowsPassThroughTheOpenEnds)
     {
         GasSetup setup;
         setup.cells = 50;
-        setup.left = end(c.in, c.w);
+        setup.left = end(c.in, c.in == GasEndType::SubsonicInflow ? reservoirOf(c.w) : c.w);
         setup.right = end(c.out, c.w);
         TubeGas gas(setup);
         gas.setState([&](double) { return c.w; });
@@ -211,6 +250,47 @@ TEST(TubeGasEnds, PressureOutletDrawsTheExactRarefaction)
                 f.p.back(), pOut, f.u.back(), outlet.u);
     EXPECT_LT(l1, 2e-3);
     EXPECT_NEAR(f.p.back(), pOut, 0.02);
+}
+
+TEST(TubeGasEnds, NozzleFromAReservoirSettlesOnTheIsentropicSolution)
+{
+    // Reservoir (rho0, p0) = (1, 1) -> A = 1 - 0.3 sin^2(pi s) -> outlet at p = 0.9: subsonic, isentropic.
+    const double pOut = 0.9, g = kGamma;
+    const double machOut = std::sqrt(2.0 / (g - 1.0) * (std::pow(1.0 / pOut, (g - 1.0) / g) - 1.0));
+    const double rhoOut = std::pow(pOut, 1.0 / g), fluxExact = rhoOut * machOut * std::sqrt(g * pOut / rhoOut);
+    double lo = 1e-3, hi = 1.0; // the throat's Mach number: A_throat / A* = 0.7 A_out / A*, subsonic branch
+    for (int it = 0; it < 60; ++it)
+        (areaRatio(0.5 * (lo + hi)) > 0.7 * areaRatio(machOut) ? lo : hi) = 0.5 * (lo + hi);
+    const double machThroat = 0.5 * (lo + hi);
+    double spread[2];
+    for (int i = 0; i < 2; ++i)
+    {
+        GasSetup setup;
+        setup.cells = 100 << i;
+        setup.left = end(GasEndType::SubsonicInflow, GasPrimitive{1.0, 0.0, 1.0});
+        setup.right = end(GasEndType::PressureOutlet, GasPrimitive{1.0, 0.0, pOut});
+        TubeGas gas(setup);
+        gas.setArea([](double s) { return 1.0 - 0.3 * std::pow(std::sin(M_PI * s), 2); });
+        gas.setState([](double) { return GasPrimitive{1.0, 0.0, 1.0}; });
+        gas.advanceTo(40.0); // settled: t = 40 and 60 agree to the 5 digits printed
+        const GasFields f = gas.fields();
+        double qmin = 1e300, qmax = 0, machMax = 0;
+        for (size_t j = 0; j < f.s.size(); ++j)
+        {
+            const double q = f.rho[j] * f.u[j] * f.area[j];
+            qmin = std::min(qmin, q), qmax = std::max(qmax, q);
+            machMax = std::max(machMax, f.u[j] / std::sqrt(g * f.p[j] / f.rho[j]));
+        }
+        const double mOut = f.u.back() / std::sqrt(g * f.p.back() / f.rho.back());
+        spread[i] = qmax / qmin - 1.0;
+        std::printf("nozzle, %d cells: rho u A spread %.2e, flux %.5f (exact %.5f), M throat %.5f (%.5f), "
+                    "M outlet %.5f (%.5f)\n",
+                    setup.cells, spread[i], qmax, fluxExact, machMax, machThroat, mOut, machOut);
+        EXPECT_NEAR(qmax / fluxExact, 1.0, 1e-3);
+        EXPECT_NEAR(machMax / machThroat, 1.0, 1e-3);
+        EXPECT_NEAR(mOut / machOut, 1.0, 1e-3);
+    }
+    EXPECT_GT(spread[0] / spread[1], 3.0); // second order
 }
 
 TEST(TubeGasSmooth, AdvectedDensityBumpConvergesAtSecondOrder)
