@@ -202,16 +202,19 @@ TEST(TubeGasEnds, UniformFlowsPassThroughTheOpenEnds)
     struct Case
     {
         GasEndType in, out;
-        GasPrimitive w;
+        GasPrimitive w; //!< u < 0: the flow enters at the right end, the same recipes mirrored
     };
-    const Case cases[2] = {{GasEndType::SubsonicInflow, GasEndType::PressureOutlet, {1.0, 0.3, 1.0}},
+    const Case cases[3] = {{GasEndType::SubsonicInflow, GasEndType::PressureOutlet, {1.0, 0.3, 1.0}},
+                           {GasEndType::SubsonicInflow, GasEndType::PressureOutlet, {1.0, -0.3, 1.0}},
                            {GasEndType::FixedState, GasEndType::Transmissive, {1.0, 2.5, 1.0}}};
     for (const Case& c : cases)
     {
         GasSetup setup;
         setup.cells = 50;
-        setup.left = end(c.in, c.in == GasEndType::SubsonicInflow ? reservoirOf(c.w) : c.w);
-        setup.right = end(c.out, c.w);
+        const GasEnd in = end(c.in, c.in == GasEndType::SubsonicInflow ? reservoirOf(c.w) : c.w);
+        const GasEnd out = end(c.out, c.w);
+        setup.left = c.w.u > 0.0 ? in : out;
+        setup.right = c.w.u > 0.0 ? out : in;
         TubeGas gas(setup);
         gas.setState([&](double) { return c.w; });
         gas.advanceTo(2.0);
