@@ -1,0 +1,232 @@
+#include "tube/TubeGas.hpp"
+
+#include <algorithm>
+#include <stdexcept>
+
+#include "unilag/TubeGas.hpp"
+
+namespace unilag::tube
+{
+
+using namespace unilag::gas;
+
+namespace
+{
+
+EndParams endParams(const GasEnd& e)
+{
+    int type = End::Wall;
+    switch (e.type)
+    {
+    case GasEndType::Wall:
+        type = End::Wall;
+        break;
+    case GasEndType::Transmissive:
+        type = End::Transmissive;
+        break;
+    case GasEndType::FixedState:
+        type = End::FixedState;
+        break;
+    case GasEndType::PressureOutlet:
+        type = End::PressureOutlet;
+        break;
+    case GasEndType::SubsonicInflow:
+        type = End::SubsonicInflow;
+        break;
+    }
+    return EndParams{type, e.state.rho, e.state.u, e.state.p};
+}
+
+//! parallel_for on the default execution space, or on Kokkos::Serial (small tubes, host backends).
+template <class Functor>
+void forEach(const char* name, int n, bool serial, const Functor& f)
+{
+#if defined(KOKKOS_ENABLE_SERIAL)
+    if constexpr (Kokkos::SpaceAccessibility<Kokkos::Serial, MemSpace>::accessible)
+        if (serial)
+        {
+            Kokkos::parallel_for(name, Kokkos::RangePolicy<Kokkos::Serial>(0, n), f);
+            return;
+        }
+#endif
+    (void)serial;
+    Kokkos::parallel_for(name, Kokkos::RangePolicy<ExecSpace>(0, n), f);
+}
+
+//! parallel_reduce into `result` (a value or a reducer), on the space forEach would use.
+template <class Functor, class Result>
+void reduce(const char* name, int n, bool serial, const Functor& f, Result&& result)
+{
+#if defined(KOKKOS_ENABLE_SERIAL)
+    if constexpr (Kokkos::SpaceAccessibility<Kokkos::Serial, MemSpace>::accessible)
+        if (serial)
+        {
+            Kokkos::parallel_reduce(name, Kokkos::RangePolicy<Kokkos::Serial>(0, n), f, result);
+            return;
+        }
+#endif
+    (void)serial;
+    Kokkos::parallel_reduce(name, Kokkos::RangePolicy<ExecSpace>(0, n), f, result);
+}
+
+} // namespace
+
+struct TubeGas::State
+{
+    GasSetup setup;
+    int n = 0;
+    double h = 0, t = 0;
+    EndParams left{}, right{};
+    int limiter = Limiter::VanLeer;
+    bool serial = false; // kernels on Kokkos::Serial (GasSetup::serialBelow)
+    StateView q, scratch, w, flux; // conserved (n), stage (n), primitives with ghosts (n + 4), faces (n + 1)
+    ScalarView areaFace, areaCell;
+};
+
+TubeGas::TubeGas(TubeGas&&) noexcept = default;
+TubeGas& TubeGas::operator=(TubeGas&&) noexcept = default;
+TubeGas::~TubeGas() = default;
+
+TubeGas::TubeGas(const GasSetup& setup) : s_(std::make_unique<State>())
+{
+    if (setup.cells < 2 || !(setup.length > 0.0) || !(setup.gamma > 1.0))
+        throw std::invalid_argument("TubeGas: need cells >= 2, length > 0, gamma > 1");
+    State& s = *s_;
+    s.setup = setup;
+    s.n = setup.cells;
+    s.h = setup.length / s.n;
+    s.left = endParams(setup.left);
+    s.right = endParams(setup.right);
+    s.serial = s.n < setup.serialBelow;
+    s.limiter = setup.limiter == GasLimiter::MinMod ? Limiter::MinMod : Limiter::VanLeer;
+    s.q = StateView("gas q", s.n);
+    s.scratch = StateView("gas q stage", s.n);
+    s.w = StateView("gas w", s.n + 2 * ghosts);
+    s.flux = StateView("gas flux", s.n + 1);
+    s.areaFace = ScalarView("gas area face", s.n + 1);
+    s.areaCell = ScalarView("gas area cell", s.n);
+    setArea([](double) { return 1.0; });
+    setState([](double) { return GasPrimitive{}; });
+}
+
+int TubeGas::cells() const { return s_->n; }
+double TubeGas::spacing() const { return s_->h; }
+double TubeGas::time() const { return s_->t; }
+
+void TubeGas::setArea(const std::function<double(double)>& area)
+{
+    State& s = *s_;
+    auto af = Kokkos::create_mirror_view(s.areaFace);
+    auto ac = Kokkos::create_mirror_view(s.areaCell);
+    for (int f = 0; f <= s.n; ++f)
+        af(f) = area(f * s.h);
+    for (int j = 0; j < s.n; ++j)
+        ac(j) = 0.5 * (af(j) + af(j + 1));
+    Kokkos::deep_copy(s.areaFace, af);
+    Kokkos::deep_copy(s.areaCell, ac);
+}
+
+void TubeGas::setState(const std::function<GasPrimitive(double)>& state)
+{
+    State& s = *s_;
+    auto q = Kokkos::create_mirror_view(s.q);
+    auto ac = Kokkos::create_mirror_view(s.areaCell);
+    Kokkos::deep_copy(ac, s.areaCell);
+    const double g = s.setup.gamma;
+    for (int j = 0; j < s.n; ++j)
+    {
+        const GasPrimitive w = state((j + 0.5) * s.h);
+        const double xi = w.rho * ac(j);
+        q(j, 0) = xi;
+        q(j, 1) = xi * w.u;
+        q(j, 2) = ac(j) * w.p / (g - 1.0) + 0.5 * xi * w.u * w.u;
+    }
+    Kokkos::deep_copy(s.q, q);
+    s.t = 0.0;
+}
+
+/*! One stage: primitives and ghosts of the stage's input (q, or scratch after the first stage), face fluxes,
+ *  then out = alpha q + beta (in + dt L(in)) into scratch (first stage) or q (second). */
+void TubeGas::residualUpdate(double alpha, double beta, double dt, bool toScratch)
+{
+    State& s = *s_;
+    const double g = s.setup.gamma;
+    const StateView in = toScratch ? s.q : s.scratch;
+    const StateView out = toScratch ? s.scratch : s.q;
+    forEach("gas primitives", s.n, s.serial, ToPrimitive{in, s.w, s.areaCell, g});
+    forEach("gas ghosts", 4, s.serial, FillGhosts{s.w, s.left, s.right, s.n, g});
+    forEach("gas fluxes", s.n + 1, s.serial,
+            FaceFlux{s.w, s.flux, s.areaFace, s.n, s.limiter, s.left.type == End::Wall, s.right.type == End::Wall, g});
+    forEach("gas update", s.n, s.serial, CellUpdate{out, s.q, in, s.w, s.flux, s.areaFace, alpha, beta, dt, s.h});
+}
+
+void TubeGas::step(double dt)
+{
+    residualUpdate(0.0, 1.0, dt, true);
+    residualUpdate(0.5, 0.5, dt, false);
+    s_->t += dt;
+}
+
+double TubeGas::stableStep() const
+{
+    State& s = *s_;
+    forEach("gas primitives", s.n, s.serial, ToPrimitive{s.q, s.w, s.areaCell, s.setup.gamma});
+    double speed = 0.0;
+    reduce("gas max speed", s.n, s.serial, MaxSignalSpeed{s.w, s.setup.gamma}, Kokkos::Max<double>(speed));
+    return s.setup.cfl * s.h / speed;
+}
+
+int TubeGas::advanceTo(double tEnd)
+{
+    int steps = 0;
+    while (s_->t < tEnd * (1.0 - 1e-14))
+    {
+        step(std::min(stableStep(), tEnd - s_->t));
+        ++steps;
+    }
+    return steps;
+}
+
+double TubeGas::mass() const
+{
+    double m = 0.0;
+    reduce("gas mass", s_->n, s_->serial, Integral{s_->q, 0, s_->h}, m);
+    return m;
+}
+
+double TubeGas::energy() const
+{
+    double e = 0.0;
+    reduce("gas energy", s_->n, s_->serial, Integral{s_->q, 2, s_->h}, e);
+    return e;
+}
+
+double leadingShockPosition(const GasFields& f, double level)
+{
+    for (size_t j = f.p.size() - 1; j > 0; --j)
+        if (f.p[j - 1] >= level && f.p[j] < level)
+            return f.s[j - 1] + (f.s[j] - f.s[j - 1]) * (f.p[j - 1] - level) / (f.p[j - 1] - f.p[j]);
+    return -1.0;
+}
+
+GasFields TubeGas::fields() const
+{
+    const State& s = *s_;
+    forEach("gas primitives", s.n, s.serial, ToPrimitive{s.q, s.w, s.areaCell, s.setup.gamma});
+    auto w = Kokkos::create_mirror_view(s.w);
+    auto ac = Kokkos::create_mirror_view(s.areaCell);
+    Kokkos::deep_copy(w, s.w);
+    Kokkos::deep_copy(ac, s.areaCell);
+    GasFields out;
+    for (int j = 0; j < s.n; ++j)
+    {
+        out.s.push_back((j + 0.5) * s.h);
+        out.rho.push_back(w(j + ghosts, 0));
+        out.u.push_back(w(j + ghosts, 1));
+        out.p.push_back(w(j + ghosts, 2));
+        out.area.push_back(ac(j));
+    }
+    return out;
+}
+
+} // namespace unilag::tube
