@@ -11,7 +11,39 @@ using namespace unilag::artery;
 namespace
 {
 constexpr double kPi = 3.14159265358979323846;
+
+/*! parallel_for / parallel_reduce on the default execution space, or on Kokkos::Serial when asked and the
+ *  views are host-accessible: a 64-cell artery spends more time in OpenMP fork/join than in its cells. */
+template <class Functor>
+void forEach(const char* name, int n, bool serial, const Functor& f)
+{
+#if defined(KOKKOS_ENABLE_SERIAL)
+    if constexpr (Kokkos::SpaceAccessibility<Kokkos::Serial, MemSpace>::accessible)
+        if (serial)
+        {
+            Kokkos::parallel_for(name, Kokkos::RangePolicy<Kokkos::Serial>(0, n), f);
+            return;
+        }
+#endif
+    (void)serial;
+    Kokkos::parallel_for(name, Kokkos::RangePolicy<ExecSpace>(0, n), f);
 }
+
+template <class Functor, class Reducer>
+void reduce(const char* name, int n, bool serial, const Functor& f, const Reducer& r)
+{
+#if defined(KOKKOS_ENABLE_SERIAL)
+    if constexpr (Kokkos::SpaceAccessibility<Kokkos::Serial, MemSpace>::accessible)
+        if (serial)
+        {
+            Kokkos::parallel_reduce(name, Kokkos::RangePolicy<Kokkos::Serial>(0, n), f, r);
+            return;
+        }
+#endif
+    (void)serial;
+    Kokkos::parallel_reduce(name, Kokkos::RangePolicy<ExecSpace>(0, n), f, r);
+}
+} // namespace
 
 double arteryBeta(const ArteryConfig& cfg)
 {
@@ -38,6 +70,7 @@ Artery::Artery(const ArteryConfig& cfg) : cfg_(cfg)
         throw std::invalid_argument("Artery: InletKind::Flux needs inletFlux");
     if (cfg.outlet == OutletKind::Windkessel && !(cfg.R1 >= 0 && cfg.R2 > 0 && cfg.C > 0))
         throw std::invalid_argument("Artery: Windkessel needs R1 >= 0, R2 > 0, C > 0");
+    serial_ = cfg.cells < cfg.serialBelow;
     constants_.rho = cfg.density;
     constants_.A0 = kPi * cfg.radius * cfg.radius;
     constants_.beta = arteryBeta(cfg);
@@ -50,8 +83,10 @@ Artery::Artery(const ArteryConfig& cfg) : cfg_(cfg)
     constants_.R1 = cfg.R1;
     constants_.R2 = cfg.R2;
     constants_.C = cfg.C;
+    constants_.setDerived();
     U_ = StateView("artery U", cfg.cells);
     U1_ = StateView("artery U1", cfg.cells);
+    flux_ = StateView("artery face flux", cfg.cells + 1);
     bc_ = BoundaryView("artery bc");
     bc1_ = BoundaryView("artery bc1");
     setState(std::vector<double>(cfg.cells, constants_.A0), std::vector<double>(cfg.cells, 0.0));
@@ -80,16 +115,16 @@ void Artery::setState(const std::vector<double>& area, const std::vector<double>
 void Artery::runStage(StateView in, StateView base, StateView out, BoundaryView bcIn, BoundaryView bcBase,
                       BoundaryView bcOut, double dt, double weight, double t)
 {
-    ArteryStage stage{constants_, in, base, out, bcIn, bcBase, bcOut, dt, 1.0 - weight, weight,
-                      cfg_.inlet == InletKind::Flux ? cfg_.inletFlux(t) : 0.0, cfg_.cells};
-    Kokkos::parallel_for("artery stage", Kokkos::RangePolicy<ExecSpace>(0, cfg_.cells), stage);
+    const double inletQ = cfg_.inlet == InletKind::Flux ? cfg_.inletFlux(t) : 0.0;
+    const ArteryFaceFlux faces{constants_, in, flux_, bcIn, bcBase, bcOut, dt, 1.0 - weight, weight, inletQ, cfg_.cells};
+    forEach("artery faces", cfg_.cells + 1, serial_, faces);
+    forEach("artery cells", cfg_.cells, serial_, ArteryCellUpdate{constants_, in, base, out, flux_, dt, 1.0 - weight, weight});
 }
 
 double Artery::maxSpeed() const
 {
     double s = 0;
-    Kokkos::parallel_reduce("artery max speed", Kokkos::RangePolicy<ExecSpace>(0, cfg_.cells),
-                            ArteryMaxSpeed{constants_, U_}, Kokkos::Max<double>(s));
+    reduce("artery max speed", cfg_.cells, serial_, ArteryMaxSpeed{constants_, U_}, Kokkos::Max<double>(s));
     return s;
 }
 
@@ -118,8 +153,7 @@ void Artery::advanceTo(double t)
 double Artery::volume() const
 {
     double v = 0;
-    Kokkos::parallel_reduce("artery volume", Kokkos::RangePolicy<ExecSpace>(0, cfg_.cells),
-                            ArteryVolume{U_, constants_.dx}, v);
+    reduce("artery volume", cfg_.cells, serial_, ArteryVolume{U_, constants_.dx}, Kokkos::Sum<double>(v));
     return v;
 }
 

@@ -27,6 +27,7 @@ struct ArteryConfig
     double gammaProfile = 2;   //!< velocity profile order gamma_p
     int cells = 64;
     double cfl = 0.9;
+    int serialBelow = 512; //!< fewer cells run on Kokkos::Serial where the views are host-accessible
     artery::InletKind inlet = artery::InletKind::Closed;
     std::function<double(double)> inletFlux; //!< Q_in(t), m^3/s, for InletKind::Flux
     artery::OutletKind outlet = artery::OutletKind::Reflection;
@@ -74,8 +75,9 @@ class Artery
 
     ArteryConfig cfg_;
     artery::ArteryConstants constants_;
-    artery::StateView U_, U1_;
+    artery::StateView U_, U1_, flux_; //!< flux_: faces 0..cells
     artery::BoundaryView bc_, bc1_;
+    bool serial_ = false;
     double time_ = 0;
     long long cellSteps_ = 0;
 };
