@@ -115,8 +115,8 @@ int throughput(int cells, bool serial)
         a.step();
     const double s = std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count();
     std::printf("cells %d threads %d%s: %.3g cell-steps/s (%.3g s for 2000 steps)\n", cells,
-                Kokkos::DefaultExecutionSpace::concurrency(),
-                serial && cells < 512 ? " (Serial)" : "", 2000.0 * cells / s, s);
+                Kokkos::DefaultExecutionSpace::concurrency(), serial && cells < 512 ? " (Serial)" : "",
+                2000.0 * cells / s, s);
     return 0;
 }
 
@@ -184,8 +184,8 @@ int runCarotid(const Options& o)
         pMax = std::fmax(pMax, row[0]), pMin = std::fmin(pMin, row[0]);
     std::printf("cells %d threads %d%s: periodic after %d cycles (change p %.2e, Q %.2e), wall %.3f s, "
                 "%lld cell-steps, %.3g cell-steps/s; inlet p %.1f/%.1f mmHg\n",
-                o.cells, Kokkos::DefaultExecutionSpace::concurrency(), o.serial && o.cells < 512 ? " (Serial)" : "", m - 1, changeP, changeQ, wall,
-                a.cellSteps(), a.cellSteps() / wall, pMax / 133.322, pMin / 133.322);
+                o.cells, Kokkos::DefaultExecutionSpace::concurrency(), o.serial && o.cells < 512 ? " (Serial)" : "",
+                m - 1, changeP, changeQ, wall, a.cellSteps(), a.cellSteps() / wall, pMax / 133.322, pMin / 133.322);
     return 0;
 }
 

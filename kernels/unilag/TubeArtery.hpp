@@ -185,7 +185,8 @@ struct ArteryFaceFlux
     }
     KOKKOS_INLINE_FUNCTION void interiorFlux(int f) const
     {
-        const ArteryFaceState L = faceState(k, in(f - 1, 0) + 0.5 * slope(f - 1, 0), in(f - 1, 1) + 0.5 * slope(f - 1, 1));
+        const ArteryFaceState L =
+            faceState(k, in(f - 1, 0) + 0.5 * slope(f - 1, 0), in(f - 1, 1) + 0.5 * slope(f - 1, 1));
         const ArteryFaceState R = faceState(k, in(f, 0) - 0.5 * slope(f, 0), in(f, 1) - 0.5 * slope(f, 1));
         double F[2];
         hllFlux(L, R, F);

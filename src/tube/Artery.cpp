@@ -14,8 +14,7 @@ constexpr double kPi = 3.14159265358979323846;
 
 /*! parallel_for / parallel_reduce on the default execution space, or on Kokkos::Serial when asked and the
  *  views are host-accessible: a 64-cell artery spends more time in OpenMP fork/join than in its cells. */
-template <class Functor>
-void forEach(const char* name, int n, bool serial, const Functor& f)
+template <class Functor> void forEach(const char* name, int n, bool serial, const Functor& f)
 {
 #if defined(KOKKOS_ENABLE_SERIAL)
     if constexpr (Kokkos::SpaceAccessibility<Kokkos::Serial, MemSpace>::accessible)
@@ -53,8 +52,7 @@ double arteryBeta(const ArteryConfig& cfg)
 
 double moensKortewegSpeed(const ArteryConfig& cfg)
 {
-    return std::sqrt(cfg.young * cfg.wall /
-                     (2.0 * cfg.density * cfg.radius * (1.0 - cfg.poisson * cfg.poisson)));
+    return std::sqrt(cfg.young * cfg.wall / (2.0 * cfg.density * cfg.radius * (1.0 - cfg.poisson * cfg.poisson)));
 }
 
 double frictionCoefficient(const ArteryConfig& cfg)
@@ -116,9 +114,11 @@ void Artery::runStage(StateView in, StateView base, StateView out, BoundaryView 
                       BoundaryView bcOut, double dt, double weight, double t)
 {
     const double inletQ = cfg_.inlet == InletKind::Flux ? cfg_.inletFlux(t) : 0.0;
-    const ArteryFaceFlux faces{constants_, in, flux_, bcIn, bcBase, bcOut, dt, 1.0 - weight, weight, inletQ, cfg_.cells};
+    const ArteryFaceFlux faces{constants_, in,           flux_,  bcIn,   bcBase,    bcOut,
+                               dt,         1.0 - weight, weight, inletQ, cfg_.cells};
     forEach("artery faces", cfg_.cells + 1, serial_, faces);
-    forEach("artery cells", cfg_.cells, serial_, ArteryCellUpdate{constants_, in, base, out, flux_, dt, 1.0 - weight, weight});
+    forEach("artery cells", cfg_.cells, serial_,
+            ArteryCellUpdate{constants_, in, base, out, flux_, dt, 1.0 - weight, weight});
 }
 
 double Artery::maxSpeed() const
@@ -163,9 +163,18 @@ double Artery::boundarySlot(int s) const
     return h(s);
 }
 
-double Artery::volumeIn() const { return boundarySlot(kVolumeIn); }
-double Artery::volumeOut() const { return boundarySlot(kVolumeOut); }
-double Artery::windkesselPressure() const { return boundarySlot(kWindkesselPressure); }
+double Artery::volumeIn() const
+{
+    return boundarySlot(kVolumeIn);
+}
+double Artery::volumeOut() const
+{
+    return boundarySlot(kVolumeOut);
+}
+double Artery::windkesselPressure() const
+{
+    return boundarySlot(kWindkesselPressure);
+}
 
 void Artery::boundaryStates(double& Ain, double& Qin, double& Aout, double& Qout) const
 {

@@ -31,13 +31,13 @@ struct ArteryConfig
     artery::InletKind inlet = artery::InletKind::Closed;
     std::function<double(double)> inletFlux; //!< Q_in(t), m^3/s, for InletKind::Flux
     artery::OutletKind outlet = artery::OutletKind::Reflection;
-    double reflection = 0;             //!< R_t for OutletKind::Reflection
-    double R1 = 0, R2 = 0, C = 0;      //!< RCR Windkessel
+    double reflection = 0;        //!< R_t for OutletKind::Reflection
+    double R1 = 0, R2 = 0, C = 0; //!< RCR Windkessel
 };
 
 //! Wall stiffness beta = sqrt(pi/A0) h E / (1 - nu^2) (Pa) and the Moens-Korteweg speed from E, h, R0 directly.
 double arteryBeta(const ArteryConfig& cfg);
-double moensKortewegSpeed(const ArteryConfig& cfg); //!< sqrt(E h / (2 rho R0 (1 - nu^2)))
+double moensKortewegSpeed(const ArteryConfig& cfg);  //!< sqrt(E h / (2 rho R0 (1 - nu^2)))
 double frictionCoefficient(const ArteryConfig& cfg); //!< K_r = 2 (gamma_p + 2) pi mu / rho
 
 class Artery
@@ -58,9 +58,9 @@ class Artery
     const artery::ArteryConstants& constants() const { return constants_; }
     long long cellSteps() const { return cellSteps_; }
 
-    double volume() const;       //!< sum A dx
-    double volumeIn() const;     //!< integral of the inlet face's volume flux since setState
-    double volumeOut() const;    //!< same on the outlet face
+    double volume() const;    //!< sum A dx
+    double volumeIn() const;  //!< integral of the inlet face's volume flux since setState
+    double volumeOut() const; //!< same on the outlet face
     double windkesselPressure() const;
     void hostState(std::vector<double>& area, std::vector<double>& flow) const;
     double pressure(double area) const { return artery::pressure(constants_, area); }
