@@ -1,7 +1,7 @@
 /*! \file TubeTimeRun.hpp
  *  \brief A nonlinear time run of a tube scene with a `dynamics:` section: the rod on SE(3) conveying fluid
  *  (TubeDynamics) driven by the shared time loop (solver/TimeLoop.hpp), the tube written as an XDMF polyline with
- *  per-node fields (ParaView's Tube filter draws it), the tip's time series in tip.csv, and summary.json with the
+ *  per-node fields (ParaView: Extract Surface, then Tube), the tip's time series in tip.csv, and summary.json with the
  *  fitted growth rate next to the linear one at the same flow speed. Rank 0 runs it (threads do the parallel
  *  work: a tube has a few hundred nodes); the other ranks wait.
  */

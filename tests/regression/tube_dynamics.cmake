@@ -52,3 +52,12 @@ tube_dynamics_error(area_change "tube_flutter.yaml: key 'dynamics.end_time': the
                     --set tube.area_change=1.0e-6)
 tube_dynamics_error(unknown_key "tube_flutter.yaml: key 'dynamics.segmnts': unknown key"
                     --set dynamics.segmnts=10)
+
+# ParaView opens the time run's polyline and draws it with Extract Surface + Tube (60 segments, 61 nodes).
+set_tests_properties(tube_dynamics_check_energy PROPERTIES FIXTURES_SETUP tube_xmf)
+if(PVPYTHON)
+  add_test(NAME paraview_draws_tube COMMAND ${PVPYTHON} ${PROJECT_SOURCE_DIR}/tests/io/pv_tube.py
+           ${WORK}/tube_energy/tube.xmf curvature)
+  set_tests_properties(paraview_draws_tube PROPERTIES FIXTURES_REQUIRED tube_xmf LABELS "io;tube"
+                       PASS_REGULAR_EXPRESSION "segments=60 nodes=61 curvature .* tube_cells=[1-9]")
+endif()
