@@ -23,12 +23,26 @@ using namespace tube;
 //! --check's bound on the relative change of mass and energy between two walls (the fluxes telescope).
 constexpr double kConservationTolerance = 1e-10;
 
-//! The exact Riemann solution of the scene's initial states, when the scene is a Riemann problem.
+//! The Riemann problem the run is compared with: the scene's, or (a fixed_state inflow) the inflow against the gas.
+struct ReferenceProblem
+{
+    GasPrimitive left, right;
+    double position = 0.0;
+};
+
+ReferenceProblem referenceProblem(const GasSettings& g)
+{
+    if (g.riemann)
+        return {g.left, g.right, g.position};
+    return {g.setup.left.state, g.left, 0.0};
+}
+
+//! The exact solution of the reference problem, when the scene has one.
 struct ExactReference
 {
-    bool riemann = false, shock = false; //!< shock: the exact solution has a right-running shock
-    double shockLevel = NAN;             //!< pressure halfway up the shock, where it is located in the run
-    double shockSpeed = NAN;             //!< exact speed of that shock
+    bool exists = false, shock = false; //!< shock: the exact solution has a right-running shock
+    double shockLevel = NAN;            //!< pressure halfway up the shock, where it is located in the run
+    double shockSpeed = NAN;            //!< exact speed of that shock
 };
 
 /*! The exact solution's right wave is a shock when p* > p_R; its speed is u_R + a_R sqrt((g+1)/(2g) p* / p_R +
@@ -36,18 +50,19 @@ struct ExactReference
 ExactReference exactReference(const GasSettings& g)
 {
     ExactReference r;
-    if (!g.riemann)
+    if (!g.hasReference())
         return r;
-    r.riemann = true;
+    r.exists = true;
     const double gamma = g.setup.gamma;
-    const RiemannExact exact(g.left, g.right, gamma);
-    const double pStar = exact.starPressure(), pR = g.right.p;
+    const ReferenceProblem rp = referenceProblem(g);
+    const RiemannExact exact(rp.left, rp.right, gamma);
+    const double pStar = exact.starPressure(), pR = rp.right.p;
     r.shock = pStar > pR * (1.0 + 1e-3);
     if (!r.shock)
         return r;
     r.shockLevel = 0.5 * (pR + pStar);
-    const double aR = std::sqrt(gamma * pR / g.right.rho);
-    r.shockSpeed = g.right.u + aR * std::sqrt((gamma + 1) / (2 * gamma) * pStar / pR + (gamma - 1) / (2 * gamma));
+    const double aR = std::sqrt(gamma * pR / rp.right.rho);
+    r.shockSpeed = rp.right.u + aR * std::sqrt((gamma + 1) / (2 * gamma) * pStar / pR + (gamma - 1) / (2 * gamma));
     return r;
 }
 
@@ -145,11 +160,12 @@ double fittedSpeed(const std::vector<double>& t, const std::vector<double>& x, d
 //! L1(density) = sum |rho - rho_exact| h against the exact solution at time t (waves not yet at the ends).
 double densityL1(const GasSettings& g, const GasFields& f, double t)
 {
-    const RiemannExact exact(g.left, g.right, g.setup.gamma);
+    const ReferenceProblem rp = referenceProblem(g);
+    const RiemannExact exact(rp.left, rp.right, g.setup.gamma);
     const double h = g.setup.length / g.setup.cells;
     double sum = 0.0;
     for (std::size_t i = 0; i < f.rho.size(); ++i)
-        sum += std::abs(f.rho[i] - exact.sample((f.s[i] - g.position) / t).rho) * h;
+        sum += std::abs(f.rho[i] - exact.sample((f.s[i] - rp.position) / t).rho) * h;
     return sum;
 }
 
@@ -180,15 +196,15 @@ void writeSummary(const TubeScene& scene, const LoopResult& loop, const GasFigur
         s.number("energy_initial", a[1]).number("energy_final", b[1]);
         s.number("energy_relative_change", relativeChange(a, b, 1));
     }
-    s.raw("riemann_problem", g.riemann ? "true" : "false");
+    s.text("exact_reference", g.riemann ? "riemann problem" : g.inflowProblem() ? "fixed_state inflow into the gas" : "none");
     if (f.ref.shock)
     {
         s.number("shock_level_pressure", f.ref.shockLevel);
         s.number("shock_position", f.shockPosition).number("shock_speed", f.shockSpeed);
         s.number("shock_speed_exact", f.ref.shockSpeed);
-        s.number("shock_position_exact", g.position + f.ref.shockSpeed * loop.state.t);
+        s.number("shock_position_exact", referenceProblem(g).position + f.ref.shockSpeed * loop.state.t);
     }
-    if (g.riemann)
+    if (g.hasReference())
         s.number("l1_density", f.l1).number("l1_density_bound", g.l1Bound);
     s.number("wall_seconds", f.wall);
     s.write(file);
@@ -239,7 +255,7 @@ int runOnRankZero(const TubeScene& scene, bool check)
         f.shockPosition = system.shockPosition.back();
         f.shockSpeed = fittedSpeed(system.shockTime, system.shockPosition, loop.state.t);
     }
-    if (g.riemann)
+    if (g.hasReference())
         f.l1 = densityL1(g, gas.fields(), loop.state.t);
     writeSummary(scene, loop, f, Kokkos::DefaultExecutionSpace().concurrency(), dir + "/summary.json");
     if (!loop.failure.empty())

@@ -129,8 +129,9 @@ GasSettings readGas(ConfigNode& g)
     s.endTime = g.positive("end_time", s.endTime, true);
     s.outputInterval = g.nonNegative("output_interval", s.outputInterval);
     ConfigNode c = g.sub("check");
-    if (c.has("l1_density") && !s.riemann)
-        c.fail("l1_density", "only a Riemann problem (initial.left/right) has an exact solution to compare with");
+    if (c.has("l1_density") && !s.hasReference())
+        c.fail("l1_density", "only a Riemann problem (initial.left/right) or a uniform gas fed by a fixed_state left "
+                             "end has an exact solution to compare with");
     if (c.has("l1_density"))
         s.l1Bound = c.positive("l1_density", 1.0);
     c.rejectUnknown();

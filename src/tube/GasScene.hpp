@@ -25,6 +25,11 @@ struct GasSettings
     double endTime = 0.2;
     double outputInterval = 0.0;  //!< 0: first and last state only
     double l1Bound = NAN;         //!< check.l1_density: --check's bound on L1(rho) against RiemannExact (NaN: none)
+    /*! A uniform gas with a fixed_state left end is the Riemann problem (that state, the gas) at s = 0 as long as
+     *  no wave runs left out of it (a supersonic inflow, or the post-shock state of a shock into the gas). */
+    bool inflowProblem() const { return !riemann && setup.left.type == GasEndType::FixedState; }
+    //! There is an exact solution to compare with (L1, shock speed).
+    bool hasReference() const { return riemann || inflowProblem(); }
     //! Both ends closed: mass and energy are conserved to round-off (--check).
     bool closed() const { return setup.left.type == GasEndType::Wall && setup.right.type == GasEndType::Wall; }
 };
