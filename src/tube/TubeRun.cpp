@@ -15,6 +15,8 @@
 #include "core/Mpi.hpp"
 #include "io/OutputFolder.hpp"
 #include "solver/Summary.hpp"
+#include "tube/ArteryRun.hpp"
+#include "tube/GasRun.hpp"
 #include "tube/LinearStability.hpp"
 #include "tube/TubeScene.hpp"
 #include "tube/TubeTimeRun.hpp"
@@ -311,6 +313,10 @@ int runTube(const std::string& scenePath, const std::vector<std::string>& overri
     }
     if (scene.hasDynamics)
         return runTubeDynamics(scene, check, comm);
+    if (scene.hasGas)
+        return runTubeGas(scene, check, comm);
+    if (scene.hasArtery)
+        return runTubeArtery(scene, check, comm);
     const StudyTables tables = runStudy(scene, comm);
     const double wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
     if (rank == 0)

@@ -169,6 +169,29 @@ void readDynamicsSection(ConfigNode& root, TubeScene& s)
     s.hasDynamics = true;
 }
 
+/*! gas: or artery: (one of them): a module with its own vessel, ends and time settings, so that the rod's sections
+ *  (tube, fluid, ends, stability, dynamics) do not apply and are refused rather than silently ignored. */
+void readFlowModule(ConfigNode& root, TubeScene& s)
+{
+    const char* module = root.has("gas") ? "gas" : "artery";
+    if (root.has("gas") && root.has("artery"))
+        root.fail("artery", "a scene runs the gas or the artery, not both");
+    for (const char* key : {"tube", "fluid", "ends", "stability", "dynamics"})
+        if (root.has(key))
+            root.fail(key, std::string("a ") + module + " scene takes its vessel and ends from `" + module + ":`");
+    ConfigNode m = root.sub(module, true);
+    if (root.has("gas"))
+    {
+        s.gas = readGas(m);
+        s.hasGas = true;
+    }
+    else
+    {
+        s.artery = readArtery(m);
+        s.hasArtery = true;
+    }
+}
+
 void readOutput(ConfigNode& root, TubeScene& s)
 {
     ConfigNode o = root.sub("output");
@@ -256,7 +279,8 @@ bool isTubeScene(const std::string& file)
 {
     try
     {
-        return config::readYaml(file, "unilag", {})->isSublist("tube");
+        const auto top = config::readYaml(file, "unilag", {});
+        return top->isSublist("tube") || top->isSublist("gas") || top->isSublist("artery");
     }
     catch (const InputError&)
     {
@@ -272,10 +296,15 @@ TubeScene readTubeScene(const std::string& file, const std::vector<std::string>&
     s.name = fs::path(file).stem().string();
     ConfigNode root(file, "", *top);
     s.name = root.text("title", s.name);
-    readTube(root, s);
-    readEnds(root, s);
-    readStability(root, s);
-    readDynamicsSection(root, s);
+    if (root.has("gas") || root.has("artery"))
+        readFlowModule(root, s);
+    else
+    {
+        readTube(root, s);
+        readEnds(root, s);
+        readStability(root, s);
+        readDynamicsSection(root, s);
+    }
     readOutput(root, s);
     root.rejectUnknown();
     s.resolved = std::make_shared<Teuchos::ParameterList>(*top);

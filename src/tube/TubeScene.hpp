@@ -12,6 +12,8 @@
 #include <string>
 #include <vector>
 
+#include "tube/ArteryScene.hpp"
+#include "tube/GasScene.hpp"
 #include "tube/TubeDynamicsScene.hpp"
 
 namespace Teuchos
@@ -107,6 +109,10 @@ struct TubeScene
     StabilityStudy stability;
     bool hasDynamics = false;  //!< `dynamics:` given: a nonlinear time run instead of the stability study
     DynamicsSettings dynamics; //!< (needs the physical tube)
+    bool hasGas = false;       //!< `gas:` given: the gas in a rigid tube (no `tube:`, `ends:`, `stability:`)
+    GasSettings gas;
+    bool hasArtery = false;    //!< `artery:` given: one 1D artery (likewise alone)
+    ArterySettings artery;
     std::string outputDirectory;
     bool plot = true;                                 //!< write stability.png (apps/tube_stability_plot.py)
     std::shared_ptr<Teuchos::ParameterList> resolved; //!< the scene after --set, for scene.yaml
@@ -115,7 +121,7 @@ struct TubeScene
 //! Read and validate a tube scene (top-level key `unilag:`), applying `--set` overrides. Throws InputError.
 TubeScene readTubeScene(const std::string& file, const std::vector<std::string>& overrides);
 
-/*! Whether the scene file is a tube scene (its `unilag:` section has a `tube:` section), for `unilag run` to
+/*! Whether the scene file is a tube scene (its `unilag:` section has a `tube:`, `gas:` or `artery:` section), for `unilag run` to
  *  dispatch it; false if the file cannot be read (the continuum reader then reports why). */
 bool isTubeScene(const std::string& file);
 

@@ -1,0 +1,297 @@
+#include "tube/GasRun.hpp"
+
+#include <chrono>
+#include <cmath>
+#include <cstdio>
+#include <filesystem>
+
+#include <Kokkos_Core.hpp>
+
+#include "core/Errors.hpp"
+#include "core/Format.hpp"
+#include "core/Mpi.hpp"
+#include "io/XdmfWriter.hpp"
+#include "solver/Summary.hpp"
+#include "solver/TimeLoop.hpp"
+
+namespace unilag
+{
+namespace
+{
+
+using namespace tube;
+//! --check's bound on the relative change of mass and energy between two walls (the fluxes telescope).
+constexpr double kConservationTolerance = 1e-10;
+
+//! The Riemann problem the run is compared with: the scene's, or (a fixed_state inflow) the inflow against the gas.
+struct ReferenceProblem
+{
+    GasPrimitive left, right;
+    double position = 0.0;
+};
+
+ReferenceProblem referenceProblem(const GasSettings& g)
+{
+    if (g.riemann)
+        return {g.left, g.right, g.position};
+    return {g.setup.left.state, g.left, 0.0};
+}
+
+//! The exact solution of the reference problem, when the scene has one.
+struct ExactReference
+{
+    bool exists = false, shock = false; //!< shock: the exact solution has a right-running shock
+    double shockLevel = NAN;            //!< pressure halfway up the shock, where it is located in the run
+    double shockSpeed = NAN;            //!< exact speed of that shock
+};
+
+/*! The exact solution's right wave is a shock when p* > p_R; its speed is u_R + a_R sqrt((g+1)/(2g) p* / p_R +
+ *  (g-1)/(2g)) (Toro 4.59). The run's shock is found where p falls through (p_R + p*) / 2. */
+ExactReference exactReference(const GasSettings& g)
+{
+    ExactReference r;
+    if (!g.hasReference())
+        return r;
+    r.exists = true;
+    const double gamma = g.setup.gamma;
+    const ReferenceProblem rp = referenceProblem(g);
+    const RiemannExact exact(rp.left, rp.right, gamma);
+    const double pStar = exact.starPressure(), pR = rp.right.p;
+    r.shock = pStar > pR * (1.0 + 1e-3);
+    if (!r.shock)
+        return r;
+    r.shockLevel = 0.5 * (pR + pStar);
+    const double aR = std::sqrt(gamma * pR / rp.right.rho);
+    r.shockSpeed = rp.right.u + aR * std::sqrt((gamma + 1) / (2 * gamma) * pStar / pR + (gamma - 1) / (2 * gamma));
+    return r;
+}
+
+/*! The gas as a TimeSystem: one loop step is one SSP-RK2 step at the CFL step. An explicit step has no retry: a
+ *  non-finite state stops the run with a diagnosis. Where the exact solution has a shock, its position is
+ *  sampled after every step, for the speed measured from the run. */
+class GasTimeSystem : public TimeSystem
+{
+  public:
+    GasTimeSystem(TubeGas& gas, const ExactReference& ref, const std::string& dir)
+        : gas_(gas), ref_(ref), writer_(MPI_COMM_SELF, dir, "tube", io::CellType::Polyline)
+    {
+        const int n = gas.cells();
+        std::vector<long long> segments;
+        for (int j = 0; j < n; ++j)
+            segments.insert(segments.end(), {j, j + 1});
+        writer_.setTopology(n + 1, n, segments);
+        coords_.assign(3 * std::size_t(n + 1), 0.0);
+        for (int f = 0; f <= n; ++f)
+            coords_[3 * std::size_t(f)] = f * gas.spacing();
+    }
+    double prepareStep(double, long) override { return gas_.stableStep(); }
+    void beginAttempts() override {}
+    bool attemptStep(double, double dt, int, int& iterations) override
+    {
+        iterations = 0;
+        gas_.step(dt);
+        return std::isfinite(gas_.mass()) && std::isfinite(gas_.energy());
+    }
+    std::string failure(double t, double dt, int) override
+    {
+        return "the gas state is not finite after the step from t = " + jsonNumber(t) + " with dt = " +
+               jsonNumber(dt) + ": lower gas.cfl, or an end state drives a vacuum";
+    }
+    void acceptStep(double t, double dt, int) override
+    {
+        if (!ref_.shock)
+            return;
+        const double x = leadingShockPosition(gas_.fields(), ref_.shockLevel);
+        if (x >= 0.0)
+        {
+            shockTime.push_back(t + dt);
+            shockPosition.push_back(x);
+        }
+    }
+    std::string collapse(double t, double dt, long step) override
+    {
+        return "the stable step fell to " + jsonNumber(dt) + " at t = " + jsonNumber(t) + " (step " +
+               std::to_string(step) + ")";
+    }
+    void write(int index, double t) override
+    {
+        const GasFields f = gas_.fields();
+        std::vector<double> mach(f.rho.size());
+        for (std::size_t i = 0; i < mach.size(); ++i)
+            mach[i] = std::abs(f.u[i]) / std::sqrt(gamma() * f.p[i] / f.rho[i]);
+        writer_.writeStep(index, t, coords_,
+                          {{"density", 1, f.rho.data()},
+                           {"pressure", 1, f.p.data()},
+                           {"velocity", 1, f.u.data()},
+                           {"mach", 1, mach.data()},
+                           {"area", 1, f.area.data()}});
+    }
+    std::vector<double> totals() override { return {gas_.mass(), gas_.energy()}; }
+    void setGamma(double g) { gamma_ = g; }
+
+    std::vector<double> shockTime, shockPosition;
+
+  private:
+    double gamma() const { return gamma_; }
+    TubeGas& gas_;
+    ExactReference ref_;
+    io::XdmfWriter writer_;
+    std::vector<double> coords_;
+    double gamma_ = 1.4;
+};
+
+//! Least-squares slope of x(t) over the samples in the second half of the run (the shock has formed and settled).
+double fittedSpeed(const std::vector<double>& t, const std::vector<double>& x, double endTime)
+{
+    double n = 0, st = 0, sx = 0, stt = 0, stx = 0;
+    for (std::size_t i = 0; i < t.size(); ++i)
+        if (t[i] >= 0.5 * endTime)
+        {
+            n += 1;
+            st += t[i];
+            sx += x[i];
+            stt += t[i] * t[i];
+            stx += t[i] * x[i];
+        }
+    const double det = n * stt - st * st;
+    return n >= 2 && det > 0 ? (n * stx - st * sx) / det : NAN;
+}
+
+//! L1(density) = sum |rho - rho_exact| h against the exact solution at time t (waves not yet at the ends).
+double densityL1(const GasSettings& g, const GasFields& f, double t)
+{
+    const ReferenceProblem rp = referenceProblem(g);
+    const RiemannExact exact(rp.left, rp.right, g.setup.gamma);
+    const double h = g.setup.length / g.setup.cells;
+    double sum = 0.0;
+    for (std::size_t i = 0; i < f.rho.size(); ++i)
+        sum += std::abs(f.rho[i] - exact.sample((f.s[i] - rp.position) / t).rho) * h;
+    return sum;
+}
+
+struct GasFigures
+{
+    ExactReference ref;
+    double shockPosition = NAN, shockSpeed = NAN, l1 = NAN, wall = 0;
+};
+
+double relativeChange(const std::vector<double>& a, const std::vector<double>& b, std::size_t i)
+{
+    return a[i] != 0.0 ? (b[i] - a[i]) / std::abs(a[i]) : 0.0;
+}
+
+void writeSummary(const TubeScene& scene, const LoopResult& loop, const GasFigures& f, int threads,
+                  const std::string& file)
+{
+    const GasSettings& g = scene.gas;
+    Summary s = runSummary(scene.file, scene.name, loop, 1, g.setup.cells, g.setup.cells + 1, 1, threads);
+    s.text("solver", "tube gas").text("model", "ideal gas in a rigid tube (HLLC, MUSCL, SSP-RK2)");
+    s.object("ends", {{"left", "\"" + std::string(gasEndName(g.setup.left.type)) + "\""},
+                      {"right", "\"" + std::string(gasEndName(g.setup.right.type)) + "\""}});
+    s.number("gamma", g.setup.gamma).number("cfl", g.setup.cfl);
+    const auto &a = loop.initialTotals, &b = loop.finalTotals;
+    if (a.size() == 2 && b.size() == 2)
+    {
+        s.number("mass_initial", a[0]).number("mass_final", b[0]).number("mass_relative_change", relativeChange(a, b, 0));
+        s.number("energy_initial", a[1]).number("energy_final", b[1]);
+        s.number("energy_relative_change", relativeChange(a, b, 1));
+    }
+    s.text("exact_reference", g.riemann ? "riemann problem" : g.inflowProblem() ? "fixed_state inflow into the gas" : "none");
+    if (f.ref.shock)
+    {
+        s.number("shock_level_pressure", f.ref.shockLevel);
+        s.number("shock_position", f.shockPosition).number("shock_speed", f.shockSpeed);
+        s.number("shock_speed_exact", f.ref.shockSpeed);
+        s.number("shock_position_exact", referenceProblem(g).position + f.ref.shockSpeed * loop.state.t);
+    }
+    if (g.hasReference())
+        s.number("l1_density", f.l1).number("l1_density_bound", g.l1Bound);
+    s.number("wall_seconds", f.wall);
+    s.write(file);
+}
+
+int checkRun(const GasSettings& g, const LoopResult& loop, const GasFigures& f)
+{
+    std::vector<std::string> fails;
+    for (std::size_t i = 0; g.closed() && i < 2; ++i)
+    {
+        const double change = std::abs(relativeChange(loop.initialTotals, loop.finalTotals, i));
+        if (!(change <= kConservationTolerance))
+            fails.push_back(std::string(i == 0 ? "mass" : "energy") + " changed by " + jsonNumber(change) +
+                            " (relative) between two walls (> " + jsonNumber(kConservationTolerance) + ")");
+    }
+    if (!std::isnan(g.l1Bound) && !(f.l1 <= g.l1Bound))
+        fails.push_back("L1(density) against the exact solution " + jsonNumber(f.l1) + " > gas.check.l1_density = " +
+                        jsonNumber(g.l1Bound));
+    for (const auto& m : fails)
+        std::fprintf(stderr, "unilag: check failed: %s\n", m.c_str());
+    if (fails.empty())
+        std::printf("unilag: check passed\n");
+    return fails.empty() ? ExitOk : ExitCheck;
+}
+
+int runOnRankZero(const TubeScene& scene, bool check)
+{
+    const GasSettings& g = scene.gas;
+    TubeGas gas(g.setup);
+    gas.setState([&](double s) { return s < g.position || !g.riemann ? g.left : g.right; });
+    const std::string dir = scene.outputDirectory;
+    std::filesystem::create_directories(dir);
+    writeTubeScene(scene, dir + "/scene.yaml");
+    GasFigures f;
+    f.ref = exactReference(g);
+    GasTimeSystem system(gas, f.ref, dir);
+    system.setGamma(g.setup.gamma);
+    TimeControl control;
+    control.endTime = g.endTime;
+    control.outputInterval = g.outputInterval;
+    control.maxRetries = 0;
+    control.initialTimeStep = gas.stableStep(); // the CFL step is stable from the start: no ramp
+    const auto start = std::chrono::steady_clock::now();
+    const LoopResult loop = runTimeLoop(system, control, MPI_COMM_SELF);
+    f.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    if (!system.shockPosition.empty())
+    {
+        f.shockPosition = system.shockPosition.back();
+        f.shockSpeed = fittedSpeed(system.shockTime, system.shockPosition, loop.state.t);
+    }
+    if (g.hasReference())
+        f.l1 = densityL1(g, gas.fields(), loop.state.t);
+    writeSummary(scene, loop, f, Kokkos::DefaultExecutionSpace().concurrency(), dir + "/summary.json");
+    if (!loop.failure.empty())
+    {
+        std::fprintf(stderr, "unilag: error: %s: %s\n", scene.file.c_str(), loop.failure.c_str());
+        return ExitUnstable;
+    }
+    std::printf("unilag: %s: tube gas, %d cells, %ld steps in %.3g s, L1(rho) %.4g, shock speed %.5g (exact %.5g); "
+                "output in %s\n",
+                scene.name.c_str(), g.setup.cells, loop.state.steps, f.wall, f.l1, f.shockSpeed, f.ref.shockSpeed,
+                dir.c_str());
+    return check ? checkRun(g, loop, f) : ExitOk;
+}
+
+} // namespace
+
+int runTubeGas(const TubeScene& scene, bool check, MPI_Comm comm)
+{
+    int code = ExitOk;
+    std::string error;
+    if (mpi::rank(comm) == 0)
+    {
+        try
+        {
+            code = runOnRankZero(scene, check);
+        }
+        catch (const std::exception& e)
+        {
+            error = e.what();
+            code = ExitInput;
+        }
+    }
+    MPI_Bcast(&code, 1, MPI_INT, 0, comm);
+    if (!error.empty())
+        std::fprintf(stderr, "unilag: error: %s\n", error.c_str());
+    return code;
+}
+
+} // namespace unilag

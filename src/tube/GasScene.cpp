@@ -1,0 +1,142 @@
+#include "tube/GasScene.hpp"
+
+#include <stdexcept>
+#include <string>
+
+#include "config/Walker.hpp"
+
+namespace unilag::tube
+{
+namespace
+{
+
+using config::ConfigNode;
+using config::num;
+
+//! A state {density, velocity, pressure}: density and pressure positive (an ideal gas has no vacuum state).
+GasPrimitive readState(ConfigNode& parent, const std::string& key)
+{
+    ConfigNode s = parent.sub(key, true);
+    GasPrimitive w;
+    w.rho = s.positive("density", 1.0, true);
+    w.u = s.number("velocity", 0.0);
+    w.p = s.positive("pressure", 1.0, true);
+    s.rejectUnknown();
+    return w;
+}
+
+/*! One end: {type: wall | transmissive | fixed_state | pressure_outlet | subsonic_inflow} and the state that type
+ *  needs (fixed_state: density, velocity, pressure; pressure_outlet: pressure; subsonic_inflow: the reservoir's
+ *  density and pressure). */
+GasEnd readEnd(ConfigNode& ends, const std::string& key)
+{
+    ConfigNode e = ends.sub(key);
+    GasEnd end;
+    end.type = e.option<GasEndType>("type", "wall",
+                                    {{"wall", GasEndType::Wall},
+                                     {"transmissive", GasEndType::Transmissive},
+                                     {"fixed_state", GasEndType::FixedState},
+                                     {"pressure_outlet", GasEndType::PressureOutlet},
+                                     {"subsonic_inflow", GasEndType::SubsonicInflow}});
+    const bool needsDensity = end.type == GasEndType::FixedState || end.type == GasEndType::SubsonicInflow;
+    const bool needsPressure = needsDensity || end.type == GasEndType::PressureOutlet;
+    for (const char* k : {"density", "velocity", "pressure"})
+    {
+        const bool wanted = std::string(k) == "density"    ? needsDensity
+                            : std::string(k) == "velocity" ? end.type == GasEndType::FixedState
+                                                           : needsPressure;
+        if (e.has(k) && !wanted)
+            e.fail(k, std::string("a ") + gasEndName(end.type) + " end takes no " + k);
+    }
+    if (needsDensity)
+        end.state.rho = e.positive("density", 1.0, true);
+    if (end.type == GasEndType::FixedState)
+        end.state.u = e.number("velocity", 0.0, true);
+    if (needsPressure)
+        end.state.p = e.positive("pressure", 1.0, true);
+    e.rejectUnknown();
+    return end;
+}
+
+//! initial: a Riemann problem (position, left, right) or a uniform state (uniform), not both.
+void readInitial(ConfigNode& g, GasSettings& s)
+{
+    ConfigNode i = g.sub("initial", true);
+    if (i.has("uniform") && (i.has("left") || i.has("right") || i.has("position")))
+        i.fail("uniform", "give a uniform state or left/right states about a position, not both");
+    if (i.has("uniform"))
+    {
+        s.left = s.right = readState(i, "uniform");
+        i.rejectUnknown();
+        return;
+    }
+    s.riemann = true;
+    s.position = i.number("position", 0.5 * s.setup.length, true);
+    if (!(s.position > 0.0 && s.position < s.setup.length))
+        i.fail("position", "must be inside the tube (0, " + num(s.setup.length) + "), found " + num(s.position));
+    s.left = readState(i, "left");
+    s.right = readState(i, "right");
+    try
+    {
+        RiemannExact(s.left, s.right, s.setup.gamma); // the exact reference must exist (no vacuum)
+    }
+    catch (const std::runtime_error& e)
+    {
+        i.fail("right", std::string("the left and right states create a vacuum: ") + e.what());
+    }
+    i.rejectUnknown();
+}
+
+} // namespace
+
+const char* gasEndName(GasEndType type)
+{
+    switch (type)
+    {
+    case GasEndType::Wall:
+        return "wall";
+    case GasEndType::Transmissive:
+        return "transmissive";
+    case GasEndType::FixedState:
+        return "fixed_state";
+    case GasEndType::PressureOutlet:
+        return "pressure_outlet";
+    case GasEndType::SubsonicInflow:
+        return "subsonic_inflow";
+    }
+    return "?";
+}
+
+GasSettings readGas(ConfigNode& g)
+{
+    GasSettings s;
+    GasSetup& setup = s.setup;
+    setup.length = g.positive("length", setup.length, true);
+    setup.cells = int(g.integer("cells", setup.cells, 4, 10000000));
+    setup.gamma = g.number("gamma", setup.gamma);
+    if (!(setup.gamma > 1.0 && setup.gamma <= 5.0))
+        g.fail("gamma", "must be in (1, 5], found " + num(setup.gamma));
+    setup.cfl = g.positive("cfl", setup.cfl);
+    if (setup.cfl > 1.0)
+        g.fail("cfl", "must be at most 1 (SSP-RK2 with MUSCL), found " + num(setup.cfl));
+    setup.limiter = g.option<GasLimiter>("limiter", "van_leer",
+                                         {{"van_leer", GasLimiter::VanLeer}, {"minmod", GasLimiter::MinMod}});
+    ConfigNode ends = g.sub("ends");
+    setup.left = readEnd(ends, "left");
+    setup.right = readEnd(ends, "right");
+    ends.rejectUnknown();
+    readInitial(g, s);
+    s.endTime = g.positive("end_time", s.endTime, true);
+    s.outputInterval = g.nonNegative("output_interval", s.outputInterval);
+    ConfigNode c = g.sub("check");
+    if (c.has("l1_density") && !s.hasReference())
+        c.fail("l1_density", "only a Riemann problem (initial.left/right) or a uniform gas fed by a fixed_state left "
+                             "end has an exact solution to compare with");
+    if (c.has("l1_density"))
+        s.l1Bound = c.positive("l1_density", 1.0);
+    c.rejectUnknown();
+    g.rejectUnknown();
+    return s;
+}
+
+} // namespace unilag::tube

@@ -1,0 +1,66 @@
+# The gas in a rigid tube and the 1D artery as tube scenes (src/tube/GasRun, ArteryRun) through `unilag run` on
+# inputs/tube_sod.yaml and inputs/artery_carotid.yaml: each passes its own --check as shipped, the physics of
+# the output (shock speed, L1 against the exact solution, the RCR's mean pressure), bad input. A few s in all.
+set(SOD_SCENE ${INPUTS}/tube_sod.yaml)
+set(CAROTID_SCENE ${INPUTS}/artery_carotid.yaml)
+
+# Sod, 200 cells, two walls: --check holds mass and energy to 1e-10 (measured 1.2e-15, 3.7e-15) and L1(density)
+# within the scene's 0.005 (measured 0.00340). The shock speed measured from the run (a fit of its position over
+# the second half) within 1% of the exact 1.75216 (measured 1.75613, 0.23%), its position within two cells.
+add_test(NAME tube_gas_sod_check COMMAND bash -c
+         "rm -rf ${WORK}/tube_sod && ${UNILAG_TUBE_SH} ${SOD_SCENE} --check --output ${WORK}/tube_sod && \
+          ${PYTHON} ${SCRIPTS}/tube_modules.py gas ${WORK}/tube_sod --speed-tol 0.01")
+set_tests_properties(tube_gas_sod_check PROPERTIES LABELS "tube;regression" PASS_REGULAR_EXPRESSION
+                     "tube_modules: PASS" ENVIRONMENT "OMP_NUM_THREADS=1")
+
+# A Mach 2 shock fed by the post-shock state at the left end: --check (L1 within the scene's 0.015, measured
+# 0.0101), the speed measured from the run within 0.5% of 2 a1 = 2.36643 (measured 2.36649, 2.5e-5).
+add_test(NAME tube_gas_shock_check COMMAND bash -c
+         "rm -rf ${WORK}/tube_shock && ${UNILAG_TUBE_SH} ${INPUTS}/tube_shock.yaml --check --output ${WORK}/tube_shock \
+          && ${PYTHON} ${SCRIPTS}/tube_modules.py gas ${WORK}/tube_shock --speed-tol 0.005")
+set_tests_properties(tube_gas_shock_check PROPERTIES LABELS "tube;regression" PASS_REGULAR_EXPRESSION
+                     "tube_modules: PASS" ENVIRONMENT "OMP_NUM_THREADS=1")
+
+# --check fails (exit 3) with a bound below the scheme's error.
+add_test(NAME tube_gas_check_fails COMMAND ${UNILAG_TUBE} ${SOD_SCENE} --check --set gas.check.l1_density=1.0e-6
+         --output ${WORK}/tube_sod_fail)
+set_tests_properties(tube_gas_check_fails PROPERTIES LABELS "tube;regression" PASS_REGULAR_EXPRESSION
+                     "check failed: L1\\(density\\)" ENVIRONMENT "OMP_NUM_THREADS=1")
+
+# The carotid, 64 cells, 8 cycles from rest: --check holds the volume balance to 1e-10 and finds the run periodic
+# (1e-3 cycle to cycle) by the last cycle (measured -2.0e-13; 4.4e-7 and 6.5e-8 at cycle 8); periodic within 6
+# cycles (measured 5, as unilag_tube_artery), the mean outlet pressure mean(Q) (R1 + R2) = 12711 Pa within 1%
+# (measured 12710.70 against 12710.7). About 1 s.
+add_test(NAME tube_artery_carotid_check COMMAND bash -c
+         "rm -rf ${WORK}/artery_carotid && ${UNILAG_TUBE_SH} ${CAROTID_SCENE} --check --output ${WORK}/artery_carotid \
+          && ${PYTHON} ${SCRIPTS}/tube_modules.py artery ${WORK}/artery_carotid --cycles 6")
+set_tests_properties(tube_artery_carotid_check PROPERTIES LABELS "tube;regression" PASS_REGULAR_EXPRESSION
+                     "tube_modules: PASS" ENVIRONMENT "OMP_NUM_THREADS=1")
+
+# Bad input: exit 2, one message naming the file and key, nothing written.
+function(tube2_error name scene pattern)
+  add_test(NAME tube2_error_${name} COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/tube2_err_${name}
+           "${pattern}" -- ${UNILAG_TUBE} ${scene} ${ARGN})
+  set_tests_properties(tube2_error_${name} PROPERTIES LABELS "tube;regression")
+endfunction()
+tube2_error(gas_unknown_key ${SOD_SCENE} "tube_sod.yaml: key 'gas.cels': unknown key" --set gas.cels=10)
+tube2_error(gas_negative_length ${SOD_SCENE} "tube_sod.yaml: key 'gas.length': must be a positive number"
+            --set gas.length=-1.0)
+tube2_error(gas_end_type ${SOD_SCENE} "tube_sod.yaml: key 'gas.ends.left.type': 'valve' is not one of"
+            --set gas.ends.left.type=valve)
+tube2_error(gas_end_extra ${SOD_SCENE} "tube_sod.yaml: key 'gas.ends.right.pressure': a wall end takes no pressure"
+            --set gas.ends.right.pressure=1.0)
+tube2_error(gas_vacuum ${SOD_SCENE} "tube_sod.yaml: key 'gas.initial.right': the left and right states create a vacuum"
+            --set gas.initial.left.velocity=-20.0 --set gas.initial.right.velocity=20.0)
+tube2_error(gas_with_rod ${SOD_SCENE} "tube_sod.yaml: key 'ends': a gas scene takes its vessel and ends"
+            --set ends.left=clamped)
+tube2_error(artery_unknown_key ${CAROTID_SCENE} "artery_carotid.yaml: key 'artery.radus': unknown key"
+            --set artery.radus=1.0)
+tube2_error(artery_negative_modulus ${CAROTID_SCENE}
+            "artery_carotid.yaml: key 'artery.youngs_modulus': must be a positive number" --set artery.youngs_modulus=-5.0)
+tube2_error(artery_negative_length ${CAROTID_SCENE} "artery_carotid.yaml: key 'artery.length': must be a positive number"
+            --set artery.length=-0.1)
+tube2_error(artery_outlet_type ${CAROTID_SCENE} "artery_carotid.yaml: key 'artery.outlet.type': 'open' is not one of"
+            --set artery.outlet.type=open)
+tube2_error(artery_dumps ${CAROTID_SCENE} "artery_carotid.yaml: key 'artery.dumps_per_cycle': must divide"
+            --set artery.dumps_per_cycle=7)
