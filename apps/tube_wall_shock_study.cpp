@@ -11,6 +11,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -75,9 +76,14 @@ ShockResult runShockTube(const WallCoefficients& w, double p4, int cells, const 
     setup.cells = cells;
     setup.gamma = kGamma;
     GasWallCoupling tube(setup, w);
-    const double r4 = equilibriumRadius(w, p4), rho4 = kRho1 * std::pow(p4 / kP1, 1.0 / kGamma);
-    tube.setState([&](double s) { return s < kDriver ? r4 : w.restRadius; },
-                  [&](double s) { return s < kDriver ? GasPrimitive{rho4, 0.0, p4} : GasPrimitive{kRho1, 0.0, kP1}; });
+    // the driver edge is a tanh ramp 0.03 m wide, p and R on the quasi-static law, isentropic rho: a jump of R
+    // from 3.2 R0 to R0 between two cells (area x10) drove the MUSCL-HLLC transport to NaN at p4/p1 = 2.8
+    auto driverPressure = [p4](double s) { return kP1 + (p4 - kP1) * 0.5 * (1.0 - std::tanh((s - kDriver) / 0.03)); };
+    tube.setState([&](double s) { return equilibriumRadius(w, driverPressure(s)); },
+                  [&](double s) {
+                      const double p = driverPressure(s);
+                      return GasPrimitive{kRho1 * std::pow(p / kP1, 1.0 / kGamma), 0.0, p};
+                  });
     const double tEnd = 2.2 / std::sqrt(kGamma * kP1 / kRho1); // the fastest front stays inside the tube
     std::vector<double> times;
     std::vector<GasFields> snaps;
@@ -120,11 +126,19 @@ int main(int argc, char* argv[])
     std::printf("air: a1 = %.2f m/s, compliant c1 = %.2f m/s\n", a1, c1);
     FILE* out = std::fopen((dir + "/tube_wall_shock_mach.csv").c_str(), "w");
     std::fprintf(out, "p4_over_p1,p2_over_p1,shock_speed,mach_a1,mach_c1,mach_rigid_relation\n");
-    for (double ratio : {1.05, 1.1, 1.2, 1.35, 1.5, 1.75, 2.0, 2.25, 2.5})
+    for (double ratio : {1.05, 1.1, 1.2, 1.35, 1.5, 1.75, 2.0, 2.25, 2.5, 2.8})
     {
         const bool profile = ratio == 2.0;
-        const ShockResult r =
-            runShockTube(w, ratio * kP1, cells, profile ? dir + "/tube_wall_shock_profile.csv" : std::string());
+        ShockResult r{};
+        try
+        {
+            r = runShockTube(w, ratio * kP1, cells, profile ? dir + "/tube_wall_shock_profile.csv" : std::string());
+        }
+        catch (const std::exception& e) // the wall failing near its bulge limit: say so, go on
+        {
+            std::printf("p4/p1 %.2f: failed (%s)\n", ratio, e.what());
+            continue;
+        }
         const double rigid = shockMachFromPressureRatio(r.p2 / kP1, kGamma);
         std::printf("p4/p1 %.2f: p2/p1 %.4f, U_s %.2f m/s, U_s/a1 %.4f, U_s/c1 %.4f (rigid tube at this p2/p1: %.4f)\n",
                     ratio, r.p2 / kP1, r.speed, r.speed / a1, r.speed / c1, rigid);

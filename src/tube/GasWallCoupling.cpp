@@ -1,6 +1,7 @@
 #include "tube/GasWallCoupling.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "unilag/TubeWall.hpp"
@@ -76,7 +77,10 @@ int GasWallCoupling::advanceTo(double tEnd)
     int steps = 0;
     while (time() < tEnd * (1.0 - 1e-14))
     {
-        step(std::min(stableStep(), tEnd - time()));
+        const double dt = stableStep();
+        if (!(dt > 0.0) || !std::isfinite(dt)) // a NaN state would otherwise loop here for ever
+            throw std::runtime_error("GasWallCoupling::advanceTo: no valid step (NaN or non-positive state)");
+        step(std::min(dt, tEnd - time()));
         ++steps;
     }
     return steps;
