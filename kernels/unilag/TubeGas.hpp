@@ -24,6 +24,14 @@ using ScalarView = Kokkos::View<double*, MemSpace>;
 
 constexpr int ghosts = 2;
 
+//! The device state a coupled stepper (src/tube/GasWallCoupling.cpp) reads and writes between gas steps:
+//! the conserved (xi, m, E) per cell and the areas, which a moving wall rewrites (docs/tube-wall.md).
+struct GasViews
+{
+    StateView q;
+    ScalarView areaFace, areaCell;
+};
+
 //! Primitive state: density (per volume), velocity along the tangent, pressure.
 struct Prim
 {

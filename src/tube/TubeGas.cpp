@@ -201,6 +201,8 @@ double TubeGas::energy() const
     return e;
 }
 
+gas::GasViews TubeGas::deviceViews() const { return gas::GasViews{s_->q, s_->areaFace, s_->areaCell}; }
+
 double leadingShockPosition(const GasFields& f, double level)
 {
     for (size_t j = f.p.size() - 1; j > 0; --j)

@@ -12,6 +12,11 @@
 
 #include "tube/RiemannExact.hpp"
 
+namespace unilag::gas
+{
+struct GasViews; // kernels/unilag/TubeGas.hpp
+}
+
 namespace unilag::tube
 {
 
@@ -84,6 +89,9 @@ class TubeGas
     double mass() const;   //!< sum of xi h
     double energy() const; //!< sum of E h
     GasFields fields() const;
+    /*! The device views (conserved state, face and cell areas) for a coupled stepper that changes the areas
+     *  between steps (docs/tube-wall.md); step() treats the areas as frozen during the step. */
+    gas::GasViews deviceViews() const;
 
   private:
     void residualUpdate(double alpha, double beta, double dt, bool toScratch);
