@@ -3,6 +3,8 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "tube/SmallLaunch.hpp"
+
 namespace unilag::tube
 {
 
@@ -11,37 +13,8 @@ using namespace unilag::artery;
 namespace
 {
 constexpr double kPi = 3.14159265358979323846;
-
-/*! parallel_for / parallel_reduce on the default execution space, or on Kokkos::Serial when asked and the
- *  views are host-accessible: a 64-cell artery spends more time in OpenMP fork/join than in its cells. */
-template <class Functor> void forEach(const char* name, int n, bool serial, const Functor& f)
-{
-#if defined(KOKKOS_ENABLE_SERIAL)
-    if constexpr (Kokkos::SpaceAccessibility<Kokkos::Serial, MemSpace>::accessible)
-        if (serial)
-        {
-            Kokkos::parallel_for(name, Kokkos::RangePolicy<Kokkos::Serial>(0, n), f);
-            return;
-        }
-#endif
-    (void)serial;
-    Kokkos::parallel_for(name, Kokkos::RangePolicy<ExecSpace>(0, n), f);
-}
-
-template <class Functor, class Reducer>
-void reduce(const char* name, int n, bool serial, const Functor& f, const Reducer& r)
-{
-#if defined(KOKKOS_ENABLE_SERIAL)
-    if constexpr (Kokkos::SpaceAccessibility<Kokkos::Serial, MemSpace>::accessible)
-        if (serial)
-        {
-            Kokkos::parallel_reduce(name, Kokkos::RangePolicy<Kokkos::Serial>(0, n), f, r);
-            return;
-        }
-#endif
-    (void)serial;
-    Kokkos::parallel_reduce(name, Kokkos::RangePolicy<ExecSpace>(0, n), f, r);
-}
+using launch::forEach; // a 64-cell artery runs on Kokkos::Serial (ArteryConfig::serialBelow)
+using launch::reduce;
 } // namespace
 
 double arteryBeta(const ArteryConfig& cfg)

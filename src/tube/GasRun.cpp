@@ -13,6 +13,7 @@
 #include "io/XdmfWriter.hpp"
 #include "solver/Summary.hpp"
 #include "solver/TimeLoop.hpp"
+#include "tube/RankZero.hpp"
 
 namespace unilag
 {
@@ -274,24 +275,7 @@ int runOnRankZero(const TubeScene& scene, bool check)
 
 int runTubeGas(const TubeScene& scene, bool check, MPI_Comm comm)
 {
-    int code = ExitOk;
-    std::string error;
-    if (mpi::rank(comm) == 0)
-    {
-        try
-        {
-            code = runOnRankZero(scene, check);
-        }
-        catch (const std::exception& e)
-        {
-            error = e.what();
-            code = ExitInput;
-        }
-    }
-    MPI_Bcast(&code, 1, MPI_INT, 0, comm);
-    if (!error.empty())
-        std::fprintf(stderr, "unilag: error: %s\n", error.c_str());
-    return code;
+    return tube::onRankZero(comm, [&] { return runOnRankZero(scene, check); });
 }
 
 } // namespace unilag

@@ -4,6 +4,7 @@
 
 #include <cmath>
 
+#include "tube/SmallLaunch.hpp"
 #include "tube/TubeDynamics.hpp"
 #include "unilag/TubeRod.hpp"
 
@@ -14,6 +15,9 @@ using namespace unilag::rod;
 
 namespace dynamics_detail
 {
+
+using launch::forEach; // rods under RodSetup::serialBelow nodes run on Kokkos::Serial
+using launch::scan;
 
 inline int endFlags(EndCondition e)
 {
@@ -27,37 +31,6 @@ inline int endFlags(EndCondition e)
         return 0;
     }
     return 0;
-}
-
-//! parallel_for on the default execution space, or on Kokkos::Serial (small rods, host backends).
-template <class Functor>
-void forEach(const char* name, int n, bool serial, const Functor& f)
-{
-#if defined(KOKKOS_ENABLE_SERIAL)
-    if constexpr (Kokkos::SpaceAccessibility<Kokkos::Serial, MemSpace>::accessible)
-        if (serial)
-        {
-            Kokkos::parallel_for(name, Kokkos::RangePolicy<Kokkos::Serial>(0, n), f);
-            return;
-        }
-#endif
-    (void)serial;
-    Kokkos::parallel_for(name, Kokkos::RangePolicy<ExecSpace>(0, n), f);
-}
-
-template <class Functor>
-void scan(const char* name, int n, bool serial, const Functor& f)
-{
-#if defined(KOKKOS_ENABLE_SERIAL)
-    if constexpr (Kokkos::SpaceAccessibility<Kokkos::Serial, MemSpace>::accessible)
-        if (serial)
-        {
-            Kokkos::parallel_scan(name, Kokkos::RangePolicy<Kokkos::Serial>(0, n), f);
-            return;
-        }
-#endif
-    (void)serial;
-    Kokkos::parallel_scan(name, Kokkos::RangePolicy<ExecSpace>(0, n), f);
 }
 
 inline RodParams rodParams(const RodConstants& c, double h)

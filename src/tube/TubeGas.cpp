@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <stdexcept>
 
+#include "tube/SmallLaunch.hpp"
 #include "unilag/TubeGas.hpp"
 
 namespace unilag::tube
@@ -12,6 +13,9 @@ using namespace unilag::gas;
 
 namespace
 {
+
+using launch::forEach; // small tubes run on Kokkos::Serial (GasSetup::serialBelow)
+using launch::reduce;
 
 EndParams endParams(const GasEnd& e)
 {
@@ -35,38 +39,6 @@ EndParams endParams(const GasEnd& e)
         break;
     }
     return EndParams{type, e.state.rho, e.state.u, e.state.p};
-}
-
-//! parallel_for on the default execution space, or on Kokkos::Serial (small tubes, host backends).
-template <class Functor>
-void forEach(const char* name, int n, bool serial, const Functor& f)
-{
-#if defined(KOKKOS_ENABLE_SERIAL)
-    if constexpr (Kokkos::SpaceAccessibility<Kokkos::Serial, MemSpace>::accessible)
-        if (serial)
-        {
-            Kokkos::parallel_for(name, Kokkos::RangePolicy<Kokkos::Serial>(0, n), f);
-            return;
-        }
-#endif
-    (void)serial;
-    Kokkos::parallel_for(name, Kokkos::RangePolicy<ExecSpace>(0, n), f);
-}
-
-//! parallel_reduce into `result` (a value or a reducer), on the space forEach would use.
-template <class Functor, class Result>
-void reduce(const char* name, int n, bool serial, const Functor& f, Result&& result)
-{
-#if defined(KOKKOS_ENABLE_SERIAL)
-    if constexpr (Kokkos::SpaceAccessibility<Kokkos::Serial, MemSpace>::accessible)
-        if (serial)
-        {
-            Kokkos::parallel_reduce(name, Kokkos::RangePolicy<Kokkos::Serial>(0, n), f, result);
-            return;
-        }
-#endif
-    (void)serial;
-    Kokkos::parallel_reduce(name, Kokkos::RangePolicy<ExecSpace>(0, n), f, result);
 }
 
 } // namespace

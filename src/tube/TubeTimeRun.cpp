@@ -19,6 +19,7 @@
 #include "tube/GrowthFit.hpp"
 #include "tube/LinearStability.hpp"
 #include "tube/TubeDynamics.hpp"
+#include "tube/RankZero.hpp"
 
 namespace unilag
 {
@@ -360,24 +361,7 @@ int runOnRankZero(const TubeScene& scene, bool check)
 
 int runTubeDynamics(const TubeScene& scene, bool check, MPI_Comm comm)
 {
-    int code = ExitOk;
-    std::string error;
-    if (mpi::rank(comm) == 0)
-    {
-        try
-        {
-            code = runOnRankZero(scene, check);
-        }
-        catch (const InputError& e)
-        {
-            error = e.what();
-            code = ExitInput;
-        }
-    }
-    MPI_Bcast(&code, 1, MPI_INT, 0, comm);
-    if (!error.empty())
-        std::fprintf(stderr, "unilag: error: %s\n", error.c_str());
-    return code;
+    return tube::onRankZero(comm, [&] { return runOnRankZero(scene, check); });
 }
 
 } // namespace unilag
