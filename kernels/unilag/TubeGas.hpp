@@ -280,4 +280,30 @@ struct Integral
     KOKKOS_INLINE_FUNCTION void operator()(int j, double& sum) const { sum += h * q(j, k); }
 };
 
+//! Counts the cells whose conserved state is not finite: the run's stop test, one integer to the host.
+struct NonFiniteCells
+{
+    StateView q;
+    KOKKOS_INLINE_FUNCTION void operator()(int j, int& bad) const
+    {
+        const bool ok = Kokkos::Experimental::isfinite(q(j, 0)) && Kokkos::Experimental::isfinite(q(j, 1)) &&
+                        Kokkos::Experimental::isfinite(q(j, 2));
+        bad += ok ? 0 : 1;
+    }
+};
+
+/*! The last face f = i + 1 (i = 0 .. n - 2) where the pressure (primitives w, with ghosts) falls through `level`
+ *  from cell f - 1 to cell f: a max-reduction, so a run tracks its shock without copying the state to the host. */
+struct LastPressureCrossing
+{
+    StateView w;
+    double level;
+    KOKKOS_INLINE_FUNCTION void operator()(int i, int& last) const
+    {
+        const int f = i + 1;
+        if (w(f - 1 + ghosts, 2) >= level && w(f + ghosts, 2) < level && f > last)
+            last = f;
+    }
+};
+
 } // namespace unilag::gas

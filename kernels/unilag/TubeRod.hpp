@@ -360,6 +360,26 @@ struct CoriolisKick
     }
 };
 
+/*! Counts the nodes whose position, velocity, spin or frame is not finite: the run's stop test, reduced on the
+ *  device so that only one integer crosses to the host each step. */
+struct NonFiniteNodes
+{
+    Vec3View position, velocity, spin;
+    Mat3View lam;
+    KOKKOS_INLINE_FUNCTION void operator()(int j, int& bad) const
+    {
+        bool ok = true;
+        for (int a = 0; a < 3; ++a)
+        {
+            ok = ok && Kokkos::Experimental::isfinite(position(j, a)) && Kokkos::Experimental::isfinite(velocity(j, a)) &&
+                 Kokkos::Experimental::isfinite(spin(j, a));
+            for (int b = 0; b < 3; ++b)
+                ok = ok && Kokkos::Experimental::isfinite(lam(j, a, b));
+        }
+        bad += ok ? 0 : 1;
+    }
+};
+
 /*! Screw-periodic closure (one thread): node N becomes the image of node 0 under the helix's screw motion
  *  g = (R_g, d_g): Lambda_N = R_g Lambda_0, r_N = R_g r_0 + d_g, v_N = R_g v_0, pi_N = pi_0 (body). */
 struct ScrewImage

@@ -1,9 +1,12 @@
 /*! \file Errors.hpp
- *  \brief The input error every reader throws and the CLI's exit codes.
+ *  \brief The input error every reader throws, the CLI's exit codes, and how --check reports.
  */
 #pragma once
 
+#include <cstdio>
 #include <stdexcept>
+#include <string>
+#include <vector>
 
 namespace unilag
 {
@@ -23,5 +26,19 @@ enum ExitCode : int
     ExitCheck = 3,   //!< --check failed
     ExitUnstable = 4 //!< the run went unstable and was stopped
 };
+
+/*! --check's verdict: each failed bound as one line on stderr, or "check passed"; printed only where print is
+ *  true (rank 0). Returns ExitCheck if any bound failed, else ExitOk. */
+inline int reportCheck(const std::vector<std::string>& fails, bool print = true)
+{
+    if (print)
+    {
+        for (const auto& f : fails)
+            std::fprintf(stderr, "unilag: check failed: %s\n", f.c_str());
+        if (fails.empty())
+            std::printf("unilag: check passed\n");
+    }
+    return fails.empty() ? ExitOk : ExitCheck;
+}
 
 } // namespace unilag

@@ -144,14 +144,7 @@ int selfCheck(const GprModel<D, P>& md, const GprSystem<D, P>& sys, const Conser
             bound("relative error of the mean radius of '" + group + "'", std::abs(r - exact) / exact,
                   scene.radiusTolerance);
         }
-    if (md.rank == 0)
-    {
-        for (const auto& f : fails)
-            std::fprintf(stderr, "unilag: check failed: %s\n", f.c_str());
-        if (fails.empty())
-            std::printf("unilag: check passed\n");
-    }
-    return fails.empty() ? ExitOk : ExitCheck;
+    return reportCheck(fails, md.rank == 0);
 }
 
 template <int D, class P>

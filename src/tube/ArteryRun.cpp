@@ -211,11 +211,7 @@ int checkRun(const ArterySettings& a, const ArteryFigures& f)
                         jsonNumber(f.changeP) + " (pressure), " + jsonNumber(f.changeQ) +
                         " (flow) >= artery.periodic_tolerance = " + jsonNumber(a.periodicTolerance) +
                         ": run more artery.cycles");
-    for (const auto& m : fails)
-        std::fprintf(stderr, "unilag: check failed: %s\n", m.c_str());
-    if (fails.empty())
-        std::printf("unilag: check passed\n");
-    return fails.empty() ? ExitOk : ExitCheck;
+    return reportCheck(fails);
 }
 
 int runOnRankZero(const TubeScene& scene, bool check)

@@ -91,7 +91,7 @@ class GasTimeSystem : public TimeSystem
     {
         iterations = 0;
         gas_.step(dt);
-        return std::isfinite(gas_.mass()) && std::isfinite(gas_.energy());
+        return gas_.finite();
     }
     std::string failure(double t, double dt, int) override
     {
@@ -102,7 +102,7 @@ class GasTimeSystem : public TimeSystem
     {
         if (!ref_.shock)
             return;
-        const double x = leadingShockPosition(gas_.fields(), ref_.shockLevel);
+        const double x = gas_.shockPosition(ref_.shockLevel);
         if (x >= 0.0)
         {
             shockTime.push_back(t + dt);
@@ -224,11 +224,7 @@ int checkRun(const GasSettings& g, const LoopResult& loop, const GasFigures& f)
     if (!std::isnan(g.l1Bound) && !(f.l1 <= g.l1Bound))
         fails.push_back("L1(density) against the exact solution " + jsonNumber(f.l1) + " > gas.check.l1_density = " +
                         jsonNumber(g.l1Bound));
-    for (const auto& m : fails)
-        std::fprintf(stderr, "unilag: check failed: %s\n", m.c_str());
-    if (fails.empty())
-        std::printf("unilag: check passed\n");
-    return fails.empty() ? ExitOk : ExitCheck;
+    return reportCheck(fails);
 }
 
 int runOnRankZero(const TubeScene& scene, bool check)

@@ -212,17 +212,9 @@ std::array<double, 3> TubeDynamics::tip() const { return position(s_->n); }
 bool TubeDynamics::finite() const
 {
     const State& s = *s_;
-    const HostState h = hostCopy(s.r, s.v, s.spin, s.lam, s.mass, s.rotary);
-    for (int j = 0; j <= s.n; ++j)
-        for (int a = 0; a < 3; ++a)
-        {
-            if (!std::isfinite(h.r(j, a)) || !std::isfinite(h.v(j, a)) || !std::isfinite(h.spin(j, a)))
-                return false;
-            for (int b = 0; b < 3; ++b)
-                if (!std::isfinite(h.lam(j, a, b)))
-                    return false;
-        }
-    return true;
+    int bad = 0;
+    launch::reduce("tube non-finite nodes", s.n + 1, s.serial, NonFiniteNodes{s.r, s.v, s.spin, s.lam}, bad);
+    return bad == 0;
 }
 
 RodFields TubeDynamics::fields() const

@@ -173,6 +173,27 @@ double TubeGas::energy() const
     return e;
 }
 
+bool TubeGas::finite() const
+{
+    int bad = 0;
+    reduce("gas non-finite cells", s_->n, s_->serial, NonFiniteCells{s_->q}, bad);
+    return bad == 0;
+}
+
+double TubeGas::shockPosition(double level) const
+{
+    const State& s = *s_;
+    forEach("gas primitives", s.n, s.serial, ToPrimitive{s.q, s.w, s.areaCell, s.setup.gamma});
+    int face = -1;
+    reduce("gas shock face", s.n - 1, s.serial, LastPressureCrossing{s.w, level}, Kokkos::Max<int>(face));
+    if (face < 1)
+        return -1.0;
+    const auto p = Kokkos::create_mirror_view_and_copy(
+        Kokkos::HostSpace(), Kokkos::subview(s.w, Kokkos::make_pair(face - 1 + ghosts, face + 1 + ghosts), 2));
+    const double left = (face - 0.5) * s.h, right = (face + 0.5) * s.h; // the two cell centres
+    return left + (right - left) * (p(0) - level) / (p(0) - p(1));
+}
+
 gas::GasViews TubeGas::deviceViews() const { return gas::GasViews{s_->q, s_->areaFace, s_->areaCell}; }
 
 double leadingShockPosition(const GasFields& f, double level)

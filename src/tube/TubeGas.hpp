@@ -88,6 +88,9 @@ class TubeGas
 
     double mass() const;   //!< sum of xi h
     double energy() const; //!< sum of E h
+    bool finite() const;   //!< every cell's conserved state is finite (one reduction on the device)
+    //! leadingShockPosition(fields(), level), found on the device (a reduction and two values copied back).
+    double shockPosition(double level) const;
     GasFields fields() const;
     /*! The device views (conserved state, face and cell areas) for a coupled stepper that changes the areas
      *  between steps (docs/tube-wall.md); step() treats the areas as frozen during the step. */

@@ -335,11 +335,7 @@ int runTube(const std::string& scenePath, const std::vector<std::string>& overri
     if (!check)
         return ExitOk;
     const std::vector<std::string> fails = convergenceCheck(scene, tables, comm);
-    for (const auto& f : fails)
-        std::fprintf(stderr, "unilag: check failed: %s\n", f.c_str());
-    if (rank == 0 && fails.empty())
-        std::printf("unilag: check passed\n");
-    return fails.empty() ? ExitOk : ExitCheck;
+    return reportCheck(fails, rank == 0); // the failures are gathered on rank 0
 }
 
 } // namespace unilag

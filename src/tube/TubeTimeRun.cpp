@@ -302,11 +302,7 @@ int checkRun(const TubeScene& scene, const LoopResult& loop, const RunFigures& f
     if (conservative && !(change <= kEnergyTolerance))
         fails.push_back("energy changed by " + jsonNumber(change) + " (relative) with no flow and no gravity (> " +
                         jsonNumber(kEnergyTolerance) + "): lower dynamics.step_factor");
-    for (const auto& m : fails)
-        std::fprintf(stderr, "unilag: check failed: %s\n", m.c_str());
-    if (fails.empty())
-        std::printf("unilag: check passed\n");
-    return fails.empty() ? ExitOk : ExitCheck;
+    return reportCheck(fails);
 }
 
 //! Rank 0's run; returns the exit code.

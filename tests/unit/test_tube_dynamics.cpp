@@ -10,6 +10,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <cstdio>
 #include <random>
 #include <vector>
@@ -391,6 +392,29 @@ TEST(TubeDynamicsFlow, DISABLED_AccurateGrowthRate)
             const double g = measuredGrowth(1.02 * ucf, n, stiffness, 0.0, 10.0);
             std::printf("N = %d, EA = kGA = %.0f, rho I = %.1e: growth at 1.02 u_cf %.5f, linear %.5f, ratio %.4f\n",
                         n, stiffness / 5e-4, 5e-4 / stiffness, g, linear, g / linear);
+        }
+}
+
+} // namespace
+
+namespace
+{
+
+//! finite() is the time run's stop test: one NaN or infinity anywhere in the state, on either execution space,
+//! must make it false, and a finite state true.
+TEST(TubeDynamicsState, FiniteFindsOneBadNode)
+{
+    for (int serialBelow : {1024, 0}) // Kokkos::Serial and the default execution space
+        for (double bad : {std::nan(""), std::numeric_limits<double>::infinity()})
+        {
+            RodSetup setup;
+            setup.segments = 20;
+            setup.serialBelow = serialBelow;
+            TubeDynamics rod(unitTube(10.0), setup);
+            rod.setVelocity([](double s) { return Vec{0.0, 0.01 * s, 0.0}; });
+            EXPECT_TRUE(rod.finite());
+            rod.setVelocity([bad](double s) { return Vec{0.0, std::abs(s - 0.5) < 1e-9 ? bad : 0.0, 0.0}; });
+            EXPECT_FALSE(rod.finite()) << "serialBelow " << serialBelow << ", value " << bad;
         }
 }
 

@@ -6,6 +6,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <cstdio>
 #include <vector>
 
@@ -126,7 +127,9 @@ TEST(TubeGasShock, MachNumberMatchesTheNormalShockRelation)
         {
             gas.advanceTo(tEnd * k / 8.0);
             t.push_back(gas.time());
-            x.push_back(leadingShockPosition(gas.fields(), 0.5 * (ahead.p + behind.p)));
+            const double level = 0.5 * (ahead.p + behind.p);
+            x.push_back(leadingShockPosition(gas.fields(), level));
+            EXPECT_DOUBLE_EQ(gas.shockPosition(level), x.back()); // the device search finds the same crossing
         }
         const double measured = slopeLeastSquares(t, x) / a1;
         std::printf("p2/p1 = %4.1f: M_s measured %.5f, relation %.5f, rel. error %.2e\n", pr, measured, mach,
@@ -324,4 +327,21 @@ TEST(TubeGasSmooth, AdvectedDensityBumpConvergesAtSecondOrder)
     std::printf("smooth bump L1(rho): %.3e %.3e %.3e (100, 200, 400 cells), observed order %.3f %.3f\n", error[0],
                 error[1], error[2], order1, order2);
     EXPECT_GT(order2, 1.6); // van Leer clips the extremum, so a little under 2
+}
+
+//! finite() is the gas run's stop test: one non-finite cell, on either execution space, makes it false.
+TEST(TubeGasState, FiniteFindsOneBadCell)
+{
+    for (int serialBelow : {1024, 0})
+        for (double bad : {std::nan(""), std::numeric_limits<double>::infinity()})
+        {
+            GasSetup setup;
+            setup.cells = 50;
+            setup.serialBelow = serialBelow;
+            TubeGas gas(setup);
+            gas.setState([](double) { return GasPrimitive{1.0, 0.0, 1.0}; });
+            EXPECT_TRUE(gas.finite());
+            gas.setState([bad](double s) { return GasPrimitive{1.0, std::abs(s - 0.51) < 0.005 ? bad : 0.0, 1.0}; });
+            EXPECT_FALSE(gas.finite()) << "serialBelow " << serialBelow << ", value " << bad;
+        }
 }
