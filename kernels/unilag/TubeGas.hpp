@@ -3,12 +3,20 @@
  *  length of the rod's s-grid, finite volumes, HLLC flux, MUSCL on primitive variables, SSP-RK2.
  *
  *  Cells are the rod's segments j = 0..N-1, faces are its nodes f = 0..N (face f between cells f-1 and f).
- *  Conserved per unit length (tube.md 1.8 with Gamma = chi, gamma = 0):
- *    xi = rho A,   m = xi u,   E = xi (e + u^2/2),
- *    d_t xi + d_s(A rho u) = 0,  d_t m + d_s(A (rho u^2 + p)) = p dA/ds,  d_t E + d_s(A u (rho E + p)) = 0.
- *  Primitive arrays carry two ghost cells on each side (storage index c = j + 2), so that the face kernel
- *  reconstructs both sides of every face with no branch on the position. Kokkos core only, no atomics: every
- *  kernel writes only its own cell or face and gathers its neighbours.
+ *  The tube may be stretched and moving (tube.md 1.8): the gas sees the centreline r(s, t) only through the
+ *  metric (c, g, k) = (|r'|^2, r'.r_t, |r_t|^2) (|Gamma|^2, Gamma.gamma, |gamma|^2), frozen during a gas step.
+ *  With Q = A sqrt(c), v = u sqrt(c) the gas speed relative to the tube (physical), w = g / sqrt(c) the tube's
+ *  own tangential speed, the conserved quantities per unit s are
+ *    xi = rho Q,   m = xi (g + u c)  (= xi Gamma.(gamma + u Gamma)),   E = xi (e + v^2/2 - k/2),
+ *  and with the metric frozen (docs/tube-gas.md 5)
+ *    d_t xi + d_s(xi u) = 0,
+ *    d_t m + d_s(u m + p Q) = xi (k'/2 + u g' + u^2 c'/2) + p Q'        (tube.md 1.8 momentum),
+ *    d_t E + d_s(xi u (e + p/rho + v^2/2 - k/2)) = 0                     (the frozen tube's energy).
+ *  A rigid straight tube at rest is c = 1, g = k = 0: Q = A and the classical quasi-1D Euler equations.
+ *  Fluxes are HLLC in the tube's frame on (rho, v, p), Galilean-shifted by w. Primitive arrays carry two ghost
+ *  cells on each side (storage index c = j + 2), so that the face kernel reconstructs both sides of every face
+ *  with no branch on the position. Kokkos core only, no atomics: every kernel writes only its own cell or face
+ *  and gathers its neighbours.
  */
 #pragma once
 
@@ -21,18 +29,22 @@ using ExecSpace = Kokkos::DefaultExecutionSpace;
 using MemSpace = ExecSpace::memory_space;
 using StateView = Kokkos::View<double* [3], MemSpace>; //!< (xi, m, E) per cell, or (rho, u, p) with ghosts
 using ScalarView = Kokkos::View<double*, MemSpace>;
+//! The tube's metric (c, g, k) = (|r'|^2, r'.r_t, |r_t|^2) per cell or face (see the file comment).
+using MetricView = Kokkos::View<double* [3], MemSpace>;
 
 constexpr int ghosts = 2;
 
 //! The device state a coupled stepper (src/tube/GasWallCoupling.cpp) reads and writes between gas steps:
-//! the conserved (xi, m, E) per cell and the areas, which a moving wall rewrites (docs/tube-wall.md).
+//! the conserved (xi, m, E) per cell and the areas, which a moving wall rewrites (docs/tube-wall.md), and the
+//! metric of the centreline, which a moving rod rewrites (docs/tube-gas.md 5).
 struct GasViews
 {
     StateView q;
     ScalarView areaFace, areaCell;
+    MetricView metricFace, metricCell;
 };
 
-//! Primitive state: density (per volume), velocity along the tangent, pressure.
+//! Primitive state: density (per volume), velocity along the tangent relative to the tube (physical), pressure.
 struct Prim
 {
     double rho, u, p;
@@ -176,19 +188,22 @@ KOKKOS_INLINE_FUNCTION Prim edgeValue(const StateView& w, int c, double side, in
     return e;
 }
 
-//! Cells: (xi, m, E) and the cell area -> (rho, u, p) at storage j + ghosts.
+//! Cells: (xi, m, E), the cell area and metric -> (rho, v, p) at storage j + ghosts (v relative to the tube).
 struct ToPrimitive
 {
     StateView q, w;
     ScalarView areaCell;
+    MetricView metric;
     double gamma;
     KOKKOS_INLINE_FUNCTION void operator()(int j) const
     {
-        const double a = areaCell(j);
-        const double rho = q(j, 0) / a, u = q(j, 1) / q(j, 0);
+        const double c = metric(j, 0), g = metric(j, 1), k = metric(j, 2);
+        const double root = Kokkos::Experimental::sqrt(c);
+        const double volume = areaCell(j) * root; // Q
+        const double rho = q(j, 0) / volume, u = (q(j, 1) / q(j, 0) - g) / c, v = u * root;
         w(j + ghosts, 0) = rho;
-        w(j + ghosts, 1) = u;
-        w(j + ghosts, 2) = (gamma - 1.0) * (q(j, 2) / a - 0.5 * rho * u * u);
+        w(j + ghosts, 1) = v;
+        w(j + ghosts, 2) = (gamma - 1.0) * ((q(j, 2) + 0.5 * k * q(j, 0)) / volume - 0.5 * rho * v * v);
     }
 };
 
@@ -215,13 +230,16 @@ struct FillGhosts
     }
 };
 
-/*! Faces f = 0..N: flux per unit length. flux(f, 0) = A_f (rho u)*, flux(f, 2) = A_f (u (rho E + p))*, and
- *  flux(f, 1) the momentum flux per unit AREA: the cell update multiplies it by A_f after subtracting the
- *  cell's own pressure, which keeps a gas at rest at rest in any tube. At a wall no mass or energy passes. */
+/*! Faces f = 0..N: the tube frame's HLLC flux (per area: mass F0, momentum F1, energy F2), shifted to the
+ *  conserved quantities per unit s: flux(f, 0) = A_f F0 (xi u), flux(f, 2) = A_f (F2 - k_f F0 / 2), and
+ *  flux(f, 1) = F1 + w_f F0, the momentum flux per unit Q: the cell update multiplies it by Q_f after subtracting
+ *  the cell's own pressure, which keeps a gas at rest at rest in any tube. At a wall no mass or energy passes
+ *  (the end cap moves with the tube). */
 struct FaceFlux
 {
     StateView w, flux;
     ScalarView areaFace;
+    MetricView metric;
     int n, limiter;
     bool wallLeft, wallRight;
     double gamma;
@@ -231,42 +249,55 @@ struct FaceFlux
         const Prim l = edgeValue(w, cl, 1.0, limiter), r = edgeValue(w, cr, -1.0, limiter);
         const Flux h = hllc(l, r, gamma);
         const bool wall = (f == 0 && wallLeft) || (f == n && wallRight);
-        const double a = areaFace(f);
+        const double a = areaFace(f), c = metric(f, 0), k = metric(f, 2);
+        const double tubeSpeed = metric(f, 1) / Kokkos::Experimental::sqrt(c); // w
         flux(f, 0) = wall ? 0.0 : a * h.f[0];
-        flux(f, 1) = h.f[1];
-        flux(f, 2) = wall ? 0.0 : a * h.f[2];
+        flux(f, 1) = h.f[1] + tubeSpeed * h.f[0];
+        flux(f, 2) = wall ? 0.0 : a * (h.f[2] - 0.5 * k * h.f[0]);
     }
 };
 
 /*! Cells: out = alpha base + beta (cur + dt L(cur)), L the semi-discrete right-hand side. SSP-RK2 is
  *  (alpha, beta) = (0, 1) then (1/2, 1/2). out may alias base or cur: each cell reads only its own entry.
- *  Momentum: -(A_R (F_R - p_j) - A_L (F_L - p_j))/h = -(A_R F_R - A_L F_L)/h + p_j (A_R - A_L)/h, the pressure
- *  source p dA/ds with the cell-centre p (second order), written so that F = p_j gives exactly zero. */
+ *  Momentum: -(Q_R (F_R - p_j) - Q_L (F_L - p_j))/h = -(Q_R F_R - Q_L F_L)/h + p_j (Q_R - Q_L)/h, the pressure
+ *  source p dQ/ds with the cell-centre p (second order), written so that F = p_j gives exactly zero; plus the
+ *  moving tube's xi (k'/2 + u g' + u^2 c'/2) from the face metrics (zero for a uniform metric). */
 struct CellUpdate
 {
     StateView out, base, cur, w, flux;
     ScalarView areaFace;
+    MetricView metricFace, metricCell;
     double alpha, beta, dt, h;
+    KOKKOS_INLINE_FUNCTION double inertialSource(int j) const
+    {
+        const double u = w(j + ghosts, 1) / Kokkos::Experimental::sqrt(metricCell(j, 0));
+        const double dc = metricFace(j + 1, 0) - metricFace(j, 0), dg = metricFace(j + 1, 1) - metricFace(j, 1),
+                     dk = metricFace(j + 1, 2) - metricFace(j, 2);
+        return cur(j, 0) * (0.5 * dk + u * dg + 0.5 * u * u * dc) / h;
+    }
     KOKKOS_INLINE_FUNCTION void operator()(int j) const
     {
         const double p = w(j + ghosts, 2);
-        const double al = areaFace(j), ar = areaFace(j + 1);
-        const double dm = -(ar * (flux(j + 1, 1) - p) - al * (flux(j, 1) - p)) / h;
+        const double ql = areaFace(j) * Kokkos::Experimental::sqrt(metricFace(j, 0)),
+                     qr = areaFace(j + 1) * Kokkos::Experimental::sqrt(metricFace(j + 1, 0));
+        const double dm = -(qr * (flux(j + 1, 1) - p) - ql * (flux(j, 1) - p)) / h + inertialSource(j);
         const double d[3] = {-(flux(j + 1, 0) - flux(j, 0)) / h, dm, -(flux(j + 1, 2) - flux(j, 2)) / h};
         for (int k = 0; k < 3; ++k)
             out(j, k) = alpha * base(j, k) + beta * (cur(j, k) + dt * d[k]);
     }
 };
 
-//! max over cells of (|u| + a), for the CFL step (storage j + ghosts).
+//! max over cells of (|v| + a) / sqrt(c), the signal speed in s per time, for the CFL step (storage j + ghosts).
 struct MaxSignalSpeed
 {
     StateView w;
+    MetricView metric;
     double gamma;
     KOKKOS_INLINE_FUNCTION void operator()(int j, double& m) const
     {
         const Prim p = loadPrim(w, j + ghosts);
-        const double s = Kokkos::Experimental::fabs(p.u) + soundSpeed(p, gamma);
+        const double s =
+            (Kokkos::Experimental::fabs(p.u) + soundSpeed(p, gamma)) / Kokkos::Experimental::sqrt(metric(j, 0));
         m = s > m ? s : m;
     }
 };

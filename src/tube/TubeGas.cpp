@@ -1,6 +1,7 @@
 #include "tube/TubeGas.hpp"
 
 #include <algorithm>
+#include <cmath>
 #include <stdexcept>
 
 #include "tube/SmallLaunch.hpp"
@@ -53,6 +54,7 @@ struct TubeGas::State
     bool serial = false; // kernels on Kokkos::Serial (GasSetup::serialBelow)
     StateView q, scratch, w, flux; // conserved (n), stage (n), primitives with ghosts (n + 4), faces (n + 1)
     ScalarView areaFace, areaCell;
+    MetricView metricFace, metricCell; // (c, g, k) of the centreline: (1, 0, 0) for a rigid tube at rest
 };
 
 TubeGas::TubeGas(TubeGas&&) noexcept = default;
@@ -77,6 +79,9 @@ TubeGas::TubeGas(const GasSetup& setup) : s_(std::make_unique<State>())
     s.flux = StateView("gas flux", s.n + 1);
     s.areaFace = ScalarView("gas area face", s.n + 1);
     s.areaCell = ScalarView("gas area cell", s.n);
+    s.metricFace = MetricView("gas metric face", s.n + 1);
+    s.metricCell = MetricView("gas metric cell", s.n);
+    setMetric({1.0, 0.0, 0.0}, {});
     setArea([](double) { return 1.0; });
     setState([](double) { return GasPrimitive{}; });
 }
@@ -98,20 +103,50 @@ void TubeGas::setArea(const std::function<double(double)>& area)
     Kokkos::deep_copy(s.areaCell, ac);
 }
 
+namespace
+{
+//! Cell metrics: the mean of the two faces' (c, g, k), all three linear in the face values.
+void cellMetricFromFaces(const MetricView::HostMirror& face, MetricView::HostMirror& cell, int n)
+{
+    for (int j = 0; j < n; ++j)
+        for (int k = 0; k < 3; ++k)
+            cell(j, k) = 0.5 * (face(j, k) + face(j + 1, k));
+}
+} // namespace
+
+void TubeGas::setMetric(const std::array<double, 3>& uniform, const std::function<std::array<double, 3>(double)>& at)
+{
+    State& s = *s_;
+    auto face = Kokkos::create_mirror_view(s.metricFace);
+    auto cell = Kokkos::create_mirror_view(s.metricCell);
+    for (int f = 0; f <= s.n; ++f)
+    {
+        const std::array<double, 3> m = at ? at(f * s.h) : uniform;
+        if (!(m[0] > 0.0) || !(m[2] >= 0.0))
+            throw std::invalid_argument("TubeGas::setMetric: need |r'|^2 > 0 and |r_t|^2 >= 0");
+        for (int k = 0; k < 3; ++k)
+            face(f, k) = m[k];
+    }
+    cellMetricFromFaces(face, cell, s.n);
+    Kokkos::deep_copy(s.metricFace, face);
+    Kokkos::deep_copy(s.metricCell, cell);
+}
+
 void TubeGas::setState(const std::function<GasPrimitive(double)>& state)
 {
     State& s = *s_;
     auto q = Kokkos::create_mirror_view(s.q);
-    auto ac = Kokkos::create_mirror_view(s.areaCell);
-    Kokkos::deep_copy(ac, s.areaCell);
+    auto ac = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), s.areaCell);
+    auto mc = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), s.metricCell);
     const double g = s.setup.gamma;
     for (int j = 0; j < s.n; ++j)
     {
         const GasPrimitive w = state((j + 0.5) * s.h);
-        const double xi = w.rho * ac(j);
+        const double c = mc(j, 0), root = std::sqrt(c), volume = ac(j) * root;
+        const double xi = w.rho * volume, u = w.u / root; // u: the gas speed in s per time
         q(j, 0) = xi;
-        q(j, 1) = xi * w.u;
-        q(j, 2) = ac(j) * w.p / (g - 1.0) + 0.5 * xi * w.u * w.u;
+        q(j, 1) = xi * (mc(j, 1) + u * c);
+        q(j, 2) = volume * w.p / (g - 1.0) + 0.5 * xi * (w.u * w.u - mc(j, 2));
     }
     Kokkos::deep_copy(s.q, q);
     s.t = 0.0;
@@ -125,11 +160,11 @@ void TubeGas::residualUpdate(double alpha, double beta, double dt, bool toScratc
     const double g = s.setup.gamma;
     const StateView in = toScratch ? s.q : s.scratch;
     const StateView out = toScratch ? s.scratch : s.q;
-    forEach("gas primitives", s.n, s.serial, ToPrimitive{in, s.w, s.areaCell, g});
+    forEach("gas primitives", s.n, s.serial, ToPrimitive{in, s.w, s.areaCell, s.metricCell, g});
     forEach("gas ghosts", 4, s.serial, FillGhosts{s.w, s.left, s.right, s.n, g});
     forEach("gas fluxes", s.n + 1, s.serial,
-            FaceFlux{s.w, s.flux, s.areaFace, s.n, s.limiter, s.left.type == End::Wall, s.right.type == End::Wall, g});
-    forEach("gas update", s.n, s.serial, CellUpdate{out, s.q, in, s.w, s.flux, s.areaFace, alpha, beta, dt, s.h});
+            FaceFlux{s.w, s.flux, s.areaFace, s.metricFace, s.n, s.limiter, s.left.type == End::Wall, s.right.type == End::Wall, g});
+    forEach("gas update", s.n, s.serial, CellUpdate{out, s.q, in, s.w, s.flux, s.areaFace, s.metricFace, s.metricCell, alpha, beta, dt, s.h});
 }
 
 void TubeGas::step(double dt)
@@ -142,9 +177,9 @@ void TubeGas::step(double dt)
 double TubeGas::stableStep() const
 {
     State& s = *s_;
-    forEach("gas primitives", s.n, s.serial, ToPrimitive{s.q, s.w, s.areaCell, s.setup.gamma});
+    forEach("gas primitives", s.n, s.serial, ToPrimitive{s.q, s.w, s.areaCell, s.metricCell, s.setup.gamma});
     double speed = 0.0;
-    reduce("gas max speed", s.n, s.serial, MaxSignalSpeed{s.w, s.setup.gamma}, Kokkos::Max<double>(speed));
+    reduce("gas max speed", s.n, s.serial, MaxSignalSpeed{s.w, s.metricCell, s.setup.gamma}, Kokkos::Max<double>(speed));
     return s.setup.cfl * s.h / speed;
 }
 
@@ -183,7 +218,7 @@ bool TubeGas::finite() const
 double TubeGas::shockPosition(double level) const
 {
     const State& s = *s_;
-    forEach("gas primitives", s.n, s.serial, ToPrimitive{s.q, s.w, s.areaCell, s.setup.gamma});
+    forEach("gas primitives", s.n, s.serial, ToPrimitive{s.q, s.w, s.areaCell, s.metricCell, s.setup.gamma});
     int face = -1;
     reduce("gas shock face", s.n - 1, s.serial, LastPressureCrossing{s.w, level}, Kokkos::Max<int>(face));
     if (face < 1)
@@ -194,7 +229,7 @@ double TubeGas::shockPosition(double level) const
     return left + (right - left) * (p(0) - level) / (p(0) - p(1));
 }
 
-gas::GasViews TubeGas::deviceViews() const { return gas::GasViews{s_->q, s_->areaFace, s_->areaCell}; }
+gas::GasViews TubeGas::deviceViews() const { return gas::GasViews{s_->q, s_->areaFace, s_->areaCell, s_->metricFace, s_->metricCell}; }
 
 double leadingShockPosition(const GasFields& f, double level)
 {
@@ -207,7 +242,7 @@ double leadingShockPosition(const GasFields& f, double level)
 GasFields TubeGas::fields() const
 {
     const State& s = *s_;
-    forEach("gas primitives", s.n, s.serial, ToPrimitive{s.q, s.w, s.areaCell, s.setup.gamma});
+    forEach("gas primitives", s.n, s.serial, ToPrimitive{s.q, s.w, s.areaCell, s.metricCell, s.setup.gamma});
     auto w = Kokkos::create_mirror_view(s.w);
     auto ac = Kokkos::create_mirror_view(s.areaCell);
     Kokkos::deep_copy(w, s.w);

@@ -1,11 +1,12 @@
 /*! \file TubeGas.hpp
- *  \brief Compressible ideal gas in a rigid straight tube of cross-section A(s) on the rod's s-grid (cells = the
- *  rod's segments, faces = its nodes): finite volumes with an HLLC flux, limited MUSCL on (rho, u, p), SSP-RK2
- *  and a CFL step. Kernels in kernels/unilag/TubeGas.hpp; docs/tube-gas.md (also how the rod's strains and a
- *  moving wall radius enter later).
+ *  \brief Compressible ideal gas in a tube of cross-section A(s) on the rod's s-grid (cells = the rod's segments,
+ *  faces = its nodes), rigid and straight by default, or stretched and moving through the centreline's metric
+ *  (setMetric): finite volumes with an HLLC flux, limited MUSCL on (rho, v, p), SSP-RK2 and a CFL step. Kernels
+ *  in kernels/unilag/TubeGas.hpp; docs/tube-gas.md.
  */
 #pragma once
 
+#include <array>
 #include <functional>
 #include <memory>
 #include <vector>
@@ -55,7 +56,7 @@ struct GasSetup
     int serialBelow = 1024;
 };
 
-//! Host copies, per cell: centre s, density, velocity, pressure, area.
+//! Host copies, per cell: centre s, density, velocity relative to the tube (physical), pressure, area.
 struct GasFields
 {
     std::vector<double> s, rho, u, p, area;
@@ -78,7 +79,12 @@ class TubeGas
     //! Cross-section at the faces (nodes) s_f = f h; a cell's area is the mean of its faces'. Default 1.
     //! Call before setState (the conserved state is per unit length).
     void setArea(const std::function<double(double s)>& area);
-    //! Primitive state at the cell centres.
+    /*! The centreline's metric (c, g, k) = (|r'|^2, r'.r_t, |r_t|^2) at the faces s_f = f h: `at` if given, else
+     *  `uniform` (a rigid tube at rest is (1, 0, 0), the default). A cell's is the mean of its faces'. Held
+     *  fixed during a step (a coupled stepper rewrites deviceViews().metric*); call before setState. */
+    void setMetric(const std::array<double, 3>& uniform,
+                   const std::function<std::array<double, 3>(double s)>& at = nullptr);
+    //! Primitive state at the cell centres (u: the speed relative to the tube, physical units).
     void setState(const std::function<GasPrimitive(double s)>& state);
     double stableStep() const; //!< cfl h / max(|u| + a)
     void step(double dt);      //!< one SSP-RK2 step
