@@ -211,6 +211,18 @@ struct SegmentStress
     }
 };
 
+/*! The rod's device state, for a coupled stepper that kicks the nodes itself (src/tube/GasRodCoupling.cpp):
+ *  positions, velocities, body spins pi, frames, the elastic load stored by the last node gather, the lumped
+ *  masses and rotary inertias (I2) per node, the end flags and the segment length h. */
+struct RodViews
+{
+    Vec3View position, velocity, spin, force, torque;
+    Mat3View lam;
+    ScalarView mass, rotary;
+    int leftFlags, rightFlags, segments;
+    double h;
+};
+
 //! Which motions an end condition fixes; node flags: bit 1 position fixed, bit 2 rotation fixed.
 KOKKOS_INLINE_FUNCTION bool positionFixed(int flags) { return flags & 1; }
 KOKKOS_INLINE_FUNCTION bool rotationFixed(int flags) { return flags & 2; }

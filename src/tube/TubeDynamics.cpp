@@ -93,6 +93,29 @@ void TubeDynamics::drift(double tau)
 
 void TubeDynamics::step(double dt) { run(dt, 1); }
 
+rod::RodViews TubeDynamics::deviceViews() const
+{
+    const State& s = *s_;
+    return rod::RodViews{s.r, s.v, s.spin, s.force, s.torque, s.lam, s.mass, s.rotary,
+                         s.leftFlags, s.rightFlags, s.n, s.p.h};
+}
+
+void TubeDynamics::storeElasticLoads()
+{
+    State& s = *s_;
+    if (s.flowing() || s.screw)
+        throw std::logic_error("TubeDynamics::storeElasticLoads: not for rods with plug flow or screw ends");
+    forEach("tube segment stress", s.n, s.serial,
+            SegmentStress{s.lam, s.r, s.segForce, s.segTorqueLeft, s.segTorqueRight, s.p});
+    NodeGather gather{s.segForce, s.segTorqueLeft, s.segTorqueRight, s.force, s.torque, s.v, s.spin, s.mass,
+                      {0, 0, 0}, s.leftFlags, s.rightFlags, s.n, 0.0, false};
+    for (int a = 0; a < 3; ++a)
+        gather.gravity[a] = s.c.gravity[a];
+    forEach("tube node gather", s.n + 1, s.serial, gather);
+}
+
+void TubeDynamics::driftBy(double tau) { drift(tau); }
+
 void TubeDynamics::run(double dt, int steps)
 {
     // kick(dt/2) [drift(dt) kick(dt)]... drift(dt) kick(dt/2): consecutive half kicks at the same positions

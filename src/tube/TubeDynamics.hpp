@@ -16,6 +16,11 @@
 
 #include "tube/TubeScene.hpp"
 
+namespace unilag::rod
+{
+struct RodViews; // kernels/unilag/TubeRod.hpp
+}
+
 namespace unilag::tube
 {
 
@@ -105,6 +110,12 @@ class TubeDynamics
     bool screwPeriodic() const;                  //!< node N is the image of node 0 (RodSetup::screwPeriodic)
     bool finite() const;
     RodFields fields() const;
+
+    //! For a coupled stepper that owns the kicks (GasRodCoupling): the device views, the elastic load into
+    //! them (no kick, no flow), and the exact drift of the kinetic energy by tau.
+    rod::RodViews deviceViews() const;
+    void storeElasticLoads();
+    void driftBy(double tau);
 
   private:
     struct State;

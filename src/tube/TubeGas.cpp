@@ -89,6 +89,7 @@ TubeGas::TubeGas(const GasSetup& setup) : s_(std::make_unique<State>())
 int TubeGas::cells() const { return s_->n; }
 double TubeGas::spacing() const { return s_->h; }
 double TubeGas::time() const { return s_->t; }
+void TubeGas::setTime(double t) { s_->t = t; }
 
 void TubeGas::setArea(const std::function<double(double)>& area)
 {

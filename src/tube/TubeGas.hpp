@@ -91,6 +91,7 @@ class TubeGas
     //! Steps of stableStep() (the last one shortened) up to time tEnd; returns the number of steps.
     int advanceTo(double tEnd);
     double time() const;
+    void setTime(double t); //!< for a coupled stepper that repeats a step from a saved state
 
     double mass() const;   //!< sum of xi h
     double energy() const; //!< sum of E h
