@@ -51,8 +51,8 @@ void GasWallCoupling::exchange(double dt)
     const WallParams p = params(wall_.coefficients());
     if (p.as > 0.0) // one work item: a Thomas sweep along the tube (kernels/unilag/TubeWall.hpp)
         forEach("wall exchange tension", 1, serial_,
-                WallExchangeTension{g.q, g.areaCell, w.radius, w.speed, w.dissipated, w.step, w.cPrime,
-                                    w.rPrime, p, gamma_, dt, gas_.spacing(), n});
+                WallExchangeTension{g.q, g.areaCell, w.radius, w.speed, w.dissipated, w.step, w.cPrime, w.rPrime, p,
+                                    gamma_, dt, gas_.spacing(), n});
     else
         forEach("wall exchange", n, serial_,
                 WallExchange{g.q, g.areaCell, w.radius, w.speed, w.dissipated, p, gamma_, dt});

@@ -215,7 +215,9 @@ TEST(TubeWallTension, LinearWallWaveHasTheDiscreteDispersion)
     GasWallCoupling tube(closedTube(cells), w, 0.05);
     const double eps = 1e-6 * w.restRadius;
     tube.setState([&](double s) { return w.restRadius + eps * std::cos(k * s); },
-                  [p0](double) { return GasPrimitive{1.0, 0.0, p0}; });
+                  [p0](double) {
+                      return GasPrimitive{1.0, 0.0, p0};
+                  });
     const double kh2 = 4.0 / (h * h) * std::pow(std::sin(0.5 * k * h), 2);
     const double stiffness = w.b + w.as * kh2, gasStiffness = 4.0 * kPi * kGamma * p0, kc2 = k * k * kGamma * p0;
     // the larger root X = w^2 of a X^2 - (a k^2 c^2 + stiffness + gasStiffness) X + stiffness k^2 c^2 = 0
