@@ -6,15 +6,15 @@
  *  term the work against the outside pressure (the -p_ext Q of the Lagrangian). a_s = 2 pi R0 N_x, N_x an axial
  *  membrane pre-tension (N/m): a generator of length ds tilted by R' is longer by R'^2 ds/2, and N_x on the
  *  circumference 2 pi R0 does that work. On the grid: sum over interior faces of a_s/2 ((R_{j+1} - R_j)/h)^2 h
- *  (zero slope at the ends), whose gradient per length is -a_s (L R)_j, L the Neumann second difference. The
- *  exchange step
- *  freezes the gas transport: in each cell xi, m and the entropy are fixed, so the gas internal energy per
- *  length is U(A) = U_n (A_n / A)^(g-1) and the cell is a one-degree-of-freedom Hamiltonian system
+ *  (zero slope at the ends), whose gradient per length is -a_s (L R)_j, L the Neumann second difference.
+ *  The exchange step freezes the gas transport: in each cell xi, m and the entropy are fixed, so the gas internal
+ *  energy per length is U(A) = U_n (A_n / A)^(g-1) and (a_s = 0) the cell is a one-degree-of-freedom system
  *  H = a V^2/2 + W(R),  W = U(pi R^2) + b (R - R0)^2/2 + p_ext pi R^2  (dW/dR = -(p - p_ext) 2 pi R + b (R - R0)),
  *  plus a viscous wall force -c V. It is advanced by the discrete-gradient (average vector field) rule
  *    R1 - R0 = dt (V0 + V1)/2,   a (V1 - V0) = -dt (W(R1) - W(R0))/(R1 - R0) - c dt (V0 + V1)/2,
  *  which gives exactly  [a V^2/2 + W]_0^1 = -c dt ((V0 + V1)/2)^2: energy moves between gas and wall with no
- *  error but that of the scalar Newton solve and round-off. Kokkos core only, no atomics.
+ *  error but that of the scalar Newton solve and round-off (a_s > 0: WallExchangeTension). Kokkos core only, no
+ *  atomics.
  */
 #pragma once
 
@@ -168,7 +168,7 @@ struct WallExchange
  *  -dt a_s/(2 h^2) off it) by a Thomas sweep. The sweep is sequential, hence ONE work item (RangePolicy(0, 1));
  *  the tubes are small (10^2-10^4 cells) so it costs about what the per-cell kernel does on a host backend; a
  *  GPU version would use cyclic reduction. Scratch: d (the step R1 - R0), and the sweep's c' and r'.
- *  Why not a separate split part R'' = (a_s/a) R'' for the wall alone: both it and the exchange would advance
+ *  Why not a separate split part d2R/dt2 = (a_s/a) R_ss for the wall alone: both it and the exchange would advance
  *  R by V dt, counting the wall velocity twice; a tension kick (R frozen) is not energy-exact. */
 struct WallExchangeTension
 {
