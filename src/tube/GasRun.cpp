@@ -4,6 +4,7 @@
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
+#include <memory>
 
 #include <Kokkos_Core.hpp>
 
@@ -13,6 +14,7 @@
 #include "io/XdmfWriter.hpp"
 #include "solver/Summary.hpp"
 #include "solver/TimeLoop.hpp"
+#include "tube/GasWallCoupling.hpp"
 #include "tube/RankZero.hpp"
 
 namespace unilag
@@ -67,23 +69,66 @@ ExactReference exactReference(const GasSettings& g)
     return r;
 }
 
-/*! The gas as a TimeSystem: one loop step is one SSP-RK2 step at the CFL step. An explicit step has no retry: a
- *  non-finite state stops the run with a diagnosis. Where the exact solution has a shock, its position is
- *  sampled after every step, for the speed measured from the run. */
+/*! An expandable tube has no exact solution; a Riemann problem with p_L > p_R drives a right-running front, located
+ *  where p falls through the rigid tube's level (p_R + p*)/2. The wall lowers the front's speed and raises p2 above
+ *  the rigid p* (docs/tube-wall.md 4), so that level lies inside the front; the speed is only measured. */
+ExactReference wallShockReference(const GasSettings& g)
+{
+    ExactReference r;
+    if (!g.riemann || !(g.left.p > g.right.p * (1.0 + 1e-3)))
+        return r;
+    const double pStar = RiemannExact(g.left, g.right, g.setup.gamma).starPressure();
+    r.shock = pStar > g.right.p * (1.0 + 1e-3);
+    r.shockLevel = 0.5 * (g.right.p + pStar);
+    return r;
+}
+
+/*! The rigid gas or the gas with its wall behind one face for the time loop. energy(): the gas's, or gas + wall +
+ *  the wall's viscous loss so far (what the coupled step conserves). */
+struct GasStepper
+{
+    std::unique_ptr<TubeGas> rigid;
+    std::unique_ptr<GasWallCoupling> coupled;
+    const TubeGas& gas() const { return coupled ? coupled->gas() : *rigid; }
+    double stableStep() const { return coupled ? coupled->stableStep() : rigid->stableStep(); }
+    void step(double dt) { coupled ? coupled->step(dt) : rigid->step(dt); }
+    double energy() const
+    {
+        if (!coupled)
+            return rigid->energy();
+        const CoupledEnergy e = coupled->energy();
+        return e.total() + e.wall.dissipated;
+    }
+    //! Per cell: the wall radius and speed (a rigid tube: (A/pi)^(1/2) and 0).
+    WallFields wall(const GasFields& f) const
+    {
+        if (coupled)
+            return coupled->wall().fields();
+        WallFields w;
+        for (const double a : f.area)
+            w.radius.push_back(std::sqrt(a / 3.14159265358979323846));
+        w.speed.assign(f.area.size(), 0.0);
+        return w;
+    }
+};
+
+/*! The gas as a TimeSystem: one loop step is one SSP-RK2 step at the CFL step (with a wall: one Strang step). An
+ *  explicit step has no retry: a non-finite state stops the run with a diagnosis. Where there is a shock, its
+ *  position is sampled after every step, for the speed measured from the run. */
 class GasTimeSystem : public TimeSystem
 {
   public:
-    GasTimeSystem(TubeGas& gas, const ExactReference& ref, const std::string& dir)
+    GasTimeSystem(GasStepper& gas, const ExactReference& ref, const std::string& dir)
         : gas_(gas), ref_(ref), writer_(MPI_COMM_SELF, dir, "tube", io::CellType::Polyline)
     {
-        const int n = gas.cells();
+        const int n = gas.gas().cells();
         std::vector<long long> segments;
         for (int j = 0; j < n; ++j)
             segments.insert(segments.end(), {j, j + 1});
         writer_.setTopology(n + 1, n, segments);
         coords_.assign(3 * std::size_t(n + 1), 0.0);
         for (int f = 0; f <= n; ++f)
-            coords_[3 * std::size_t(f)] = f * gas.spacing();
+            coords_[3 * std::size_t(f)] = f * gas.gas().spacing();
     }
     double prepareStep(double, long) override { return gas_.stableStep(); }
     void beginAttempts() override {}
@@ -91,7 +136,7 @@ class GasTimeSystem : public TimeSystem
     {
         iterations = 0;
         gas_.step(dt);
-        return gas_.finite();
+        return gas_.gas().finite(); // a non-finite wall makes the gas's energy non-finite in the exchange
     }
     std::string failure(double t, double dt, int) override
     {
@@ -102,7 +147,7 @@ class GasTimeSystem : public TimeSystem
     {
         if (!ref_.shock)
             return;
-        const double x = gas_.shockPosition(ref_.shockLevel);
+        const double x = gas_.gas().shockPosition(ref_.shockLevel);
         if (x >= 0.0)
         {
             shockTime.push_back(t + dt);
@@ -116,7 +161,8 @@ class GasTimeSystem : public TimeSystem
     }
     void write(int index, double t) override
     {
-        const GasFields f = gas_.fields();
+        const GasFields f = gas_.gas().fields();
+        const WallFields w = gas_.wall(f);
         std::vector<double> mach(f.rho.size());
         for (std::size_t i = 0; i < mach.size(); ++i)
             mach[i] = std::abs(f.u[i]) / std::sqrt(gamma() * f.p[i] / f.rho[i]);
@@ -125,16 +171,18 @@ class GasTimeSystem : public TimeSystem
                            {"pressure", 1, f.p.data()},
                            {"velocity", 1, f.u.data()},
                            {"mach", 1, mach.data()},
-                           {"area", 1, f.area.data()}});
+                           {"area", 1, f.area.data()},
+                           {"radius", 1, w.radius.data()},
+                           {"wall_speed", 1, w.speed.data()}});
     }
-    std::vector<double> totals() override { return {gas_.mass(), gas_.energy()}; }
+    std::vector<double> totals() override { return {gas_.gas().mass(), gas_.energy()}; }
     void setGamma(double g) { gamma_ = g; }
 
     std::vector<double> shockTime, shockPosition;
 
   private:
     double gamma() const { return gamma_; }
-    TubeGas& gas_;
+    GasStepper& gas_;
     ExactReference ref_;
     io::XdmfWriter writer_;
     std::vector<double> coords_;
@@ -174,6 +222,9 @@ struct GasFigures
 {
     ExactReference ref;
     double shockPosition = NAN, shockSpeed = NAN, l1 = NAN, wall = 0;
+    CoupledEnergy energy;         //!< with a wall: the final energy parts
+    double radiusLeftEnd = NAN;   //!< with a wall: the final radius of the first cell
+    double pressureLeftEnd = NAN; //!< and its gas pressure
 };
 
 double relativeChange(const std::vector<double>& a, const std::vector<double>& b, std::size_t i)
@@ -181,12 +232,45 @@ double relativeChange(const std::vector<double>& a, const std::vector<double>& b
     return a[i] != 0.0 ? (b[i] - a[i]) / std::abs(a[i]) : 0.0;
 }
 
+/*! The wall's coefficients, the final energy parts, the linear speeds of the right state (gas a1, compliant c1 on
+ *  the quasi-static law, tube.md 3) and the measured front's speed in both units. */
+void writeWallSummary(Summary& s, const GasSettings& g, const GasFigures& f)
+{
+    const WallCoefficients c = g.wall.coefficients();
+    s.object("wall", {{"a", jsonNumber(c.a)},
+                      {"b", jsonNumber(c.b)},
+                      {"c", jsonNumber(c.c)},
+                      {"as", jsonNumber(c.as)},
+                      {"outside_pressure", jsonNumber(c.pExt)},
+                      {"bulge_limit_pressure", jsonNumber(c.pExt + c.b / (2.0 * 3.14159265358979323846))}});
+    s.object("energy_final_parts", {{"gas", jsonNumber(f.energy.gas)},
+                                    {"wall_kinetic", jsonNumber(f.energy.wall.kinetic)},
+                                    {"wall_elastic", jsonNumber(f.energy.wall.elastic)},
+                                    {"wall_tension", jsonNumber(f.energy.wall.tension)},
+                                    {"outside", jsonNumber(f.energy.wall.outside)},
+                                    {"dissipated", jsonNumber(f.energy.wall.dissipated)}});
+    const GasPrimitive& r = g.right;
+    const double a1 = std::sqrt(g.setup.gamma * r.p / r.rho), c1 = compliantSpeed(c, r.rho, r.p, g.setup.gamma);
+    s.number("sound_speed_right", a1).number("compliant_speed_right", c1);
+    s.number("wall_rest_radius", c.restRadius).number("radius_final_left_end", f.radiusLeftEnd);
+    s.number("pressure_final_left_end", f.pressureLeftEnd);
+    if (f.ref.shock)
+    {
+        s.number("shock_level_pressure", f.ref.shockLevel);
+        s.number("shock_position", f.shockPosition).number("shock_speed", f.shockSpeed);
+        s.number("shock_mach_gas", f.shockSpeed / a1).number("shock_mach_compliant", f.shockSpeed / c1);
+    }
+}
+
 void writeSummary(const TubeScene& scene, const LoopResult& loop, const GasFigures& f, int threads,
                   const std::string& file)
 {
     const GasSettings& g = scene.gas;
     Summary s = runSummary(scene.file, scene.name, loop, 1, g.setup.cells, g.setup.cells + 1, 1, threads);
-    s.text("solver", "tube gas").text("model", "ideal gas in a rigid tube (HLLC, MUSCL, SSP-RK2)");
+    if (g.wall.enabled)
+        s.text("solver", "tube gas + wall").text("model", "ideal gas in an expandable tube (docs/tube-wall.md)");
+    else
+        s.text("solver", "tube gas").text("model", "ideal gas in a rigid tube (HLLC, MUSCL, SSP-RK2)");
     s.object("ends", {{"left", "\"" + std::string(gasEndName(g.setup.left.type)) + "\""},
                       {"right", "\"" + std::string(gasEndName(g.setup.right.type)) + "\""}});
     s.number("gamma", g.setup.gamma).number("cfl", g.setup.cfl);
@@ -197,8 +281,11 @@ void writeSummary(const TubeScene& scene, const LoopResult& loop, const GasFigur
         s.number("energy_initial", a[1]).number("energy_final", b[1]);
         s.number("energy_relative_change", relativeChange(a, b, 1));
     }
-    s.text("exact_reference", g.riemann ? "riemann problem" : g.inflowProblem() ? "fixed_state inflow into the gas" : "none");
-    if (f.ref.shock)
+    const bool exact = g.hasReference();
+    s.text("exact_reference", !exact ? "none" : g.riemann ? "riemann problem" : "fixed_state inflow into the gas");
+    if (g.wall.enabled)
+        writeWallSummary(s, g, f);
+    else if (f.ref.shock)
     {
         s.number("shock_level_pressure", f.ref.shockLevel);
         s.number("shock_position", f.shockPosition).number("shock_speed", f.shockSpeed);
@@ -230,13 +317,25 @@ int checkRun(const GasSettings& g, const LoopResult& loop, const GasFigures& f)
 int runOnRankZero(const TubeScene& scene, bool check)
 {
     const GasSettings& g = scene.gas;
-    TubeGas gas(g.setup);
-    gas.setState([&](double s) { return s < g.position || !g.riemann ? g.left : g.right; });
+    GasStepper gas;
+    if (g.wall.enabled)
+    {
+        const WallCoefficients w = g.wall.coefficients();
+        gas.coupled = std::make_unique<GasWallCoupling>(g.setup, w);
+        // the wall starts on the quasi-static law of the local pressure (readWall checked that it exists)
+        gas.coupled->setState([&](double s) { return equilibriumRadius(w, g.initialState(s).p); },
+                              [&](double s) { return g.initialState(s); });
+    }
+    else
+    {
+        gas.rigid = std::make_unique<TubeGas>(g.setup);
+        gas.rigid->setState([&](double s) { return g.initialState(s); });
+    }
     const std::string dir = scene.outputDirectory;
     std::filesystem::create_directories(dir);
     writeTubeScene(scene, dir + "/scene.yaml");
     GasFigures f;
-    f.ref = exactReference(g);
+    f.ref = g.wall.enabled ? wallShockReference(g) : exactReference(g);
     GasTimeSystem system(gas, f.ref, dir);
     system.setGamma(g.setup.gamma);
     TimeControl control;
@@ -253,17 +352,29 @@ int runOnRankZero(const TubeScene& scene, bool check)
         f.shockSpeed = fittedSpeed(system.shockTime, system.shockPosition, loop.state.t);
     }
     if (g.hasReference())
-        f.l1 = densityL1(g, gas.fields(), loop.state.t);
+        f.l1 = densityL1(g, gas.gas().fields(), loop.state.t);
+    if (gas.coupled)
+    {
+        f.energy = gas.coupled->energy();
+        f.radiusLeftEnd = gas.coupled->wall().fields().radius.front();
+        f.pressureLeftEnd = gas.coupled->gas().fields().p.front();
+    }
     writeSummary(scene, loop, f, Kokkos::DefaultExecutionSpace().concurrency(), dir + "/summary.json");
     if (!loop.failure.empty())
     {
         std::fprintf(stderr, "unilag: error: %s: %s\n", scene.file.c_str(), loop.failure.c_str());
         return ExitUnstable;
     }
-    std::printf("unilag: %s: tube gas, %d cells, %ld steps in %.3g s, L1(rho) %.4g, shock speed %.5g (exact %.5g); "
-                "output in %s\n",
-                scene.name.c_str(), g.setup.cells, loop.state.steps, f.wall, f.l1, f.shockSpeed, f.ref.shockSpeed,
-                dir.c_str());
+    if (g.wall.enabled)
+        std::printf("unilag: %s: tube gas + wall, %d cells, %ld steps in %.3g s, energy change %.3g, shock speed "
+                    "%.5g; output in %s\n",
+                    scene.name.c_str(), g.setup.cells, loop.state.steps, f.wall,
+                    relativeChange(loop.initialTotals, loop.finalTotals, 1), f.shockSpeed, dir.c_str());
+    else
+        std::printf("unilag: %s: tube gas, %d cells, %ld steps in %.3g s, L1(rho) %.4g, shock speed %.5g (exact %.5g); "
+                    "output in %s\n",
+                    scene.name.c_str(), g.setup.cells, loop.state.steps, f.wall, f.l1, f.shockSpeed, f.ref.shockSpeed,
+                    dir.c_str());
     return check ? checkRun(g, loop, f) : ExitOk;
 }
 

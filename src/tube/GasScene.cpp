@@ -1,5 +1,6 @@
 #include "tube/GasScene.hpp"
 
+#include <cmath>
 #include <stdexcept>
 #include <string>
 
@@ -12,6 +13,7 @@ namespace
 
 using config::ConfigNode;
 using config::num;
+constexpr double pi_ = 3.14159265358979323846;
 
 //! A state {density, velocity, pressure}: density and pressure positive (an ideal gas has no vacuum state).
 GasPrimitive readState(ConfigNode& parent, const std::string& key)
@@ -87,7 +89,52 @@ void readInitial(ConfigNode& g, GasSettings& s)
     i.rejectUnknown();
 }
 
+/*! wall: the material (young_modulus, thickness, density, rest_radius required; poisson in [0, 0.5], viscosity,
+ *  axial_tension >= 0), outside_pressure (required) and ramp (the width of the initial blend, >= 0). The wall
+ *  starts on the quasi-static law of the initial pressure, which must exist (below the bulge limit). */
+GasWallSettings readWall(ConfigNode& g, const GasSettings& s)
+{
+    ConfigNode w = g.sub("wall");
+    GasWallSettings wall;
+    wall.enabled = true;
+    WallMaterial& m = wall.material;
+    m.youngModulus = w.positive("young_modulus", m.youngModulus, true);
+    m.poisson = w.number("poisson", m.poisson);
+    if (!(m.poisson >= 0.0 && m.poisson <= 0.5))
+        w.fail("poisson", "must be in [0, 0.5], found " + num(m.poisson));
+    m.thickness = w.positive("thickness", m.thickness, true);
+    m.density = w.positive("density", m.density, true);
+    m.restRadius = w.positive("rest_radius", m.restRadius, true);
+    m.viscosity = w.nonNegative("viscosity", m.viscosity);
+    m.axialTension = w.nonNegative("axial_tension", m.axialTension);
+    wall.outsidePressure = w.number("outside_pressure", 0.0, true);
+    if (!(wall.outsidePressure >= 0.0) || !std::isfinite(wall.outsidePressure))
+        w.fail("outside_pressure", "must be a non-negative number, found " + num(wall.outsidePressure));
+    wall.ramp = w.nonNegative("ramp", wall.ramp);
+    if (wall.ramp > 0.0 && !s.riemann)
+        w.fail("ramp", "blends the left and right initial states: a uniform gas has none");
+    const WallCoefficients c = wall.coefficients();
+    const double limit = c.b / (2.0 * pi_) + wall.outsidePressure;
+    for (const double p : {s.left.p, s.right.p})
+        if (!(p < limit))
+            w.fail("young_modulus", "the initial pressure " + num(p) +
+                                        " is past the wall's bulge limit p_ext + b/(2 pi) = " + num(limit) +
+                                        ": no equilibrium radius (stiffen the wall or lower the pressure)");
+    w.rejectUnknown();
+    return wall;
+}
+
 } // namespace
+
+GasPrimitive GasSettings::initialState(double s) const
+{
+    if (!riemann)
+        return left;
+    if (!(wall.ramp > 0.0))
+        return s < position ? left : right;
+    const double wl = 0.5 * (1.0 - std::tanh((s - position) / wall.ramp)), wr = 1.0 - wl;
+    return GasPrimitive{wl * left.rho + wr * right.rho, wl * left.u + wr * right.u, wl * left.p + wr * right.p};
+}
 
 const char* gasEndName(GasEndType type)
 {
@@ -128,7 +175,11 @@ GasSettings readGas(ConfigNode& g)
     readInitial(g, s);
     s.endTime = g.positive("end_time", s.endTime, true);
     s.outputInterval = g.nonNegative("output_interval", s.outputInterval);
+    if (g.has("wall"))
+        s.wall = readWall(g, s);
     ConfigNode c = g.sub("check");
+    if (c.has("l1_density") && s.wall.enabled)
+        c.fail("l1_density", "an expandable tube (gas.wall) has no exact solution to compare with");
     if (c.has("l1_density") && !s.hasReference())
         c.fail("l1_density", "only a Riemann problem (initial.left/right) or a uniform gas fed by a fixed_state left "
                              "end has an exact solution to compare with");

@@ -16,7 +16,7 @@ namespace
 
 WallParams params(const WallCoefficients& c)
 {
-    return WallParams{c.a, c.b, c.c, c.restRadius, c.pExt};
+    return WallParams{c.a, c.b, c.c, c.restRadius, c.pExt, c.as};
 }
 
 } // namespace
@@ -49,7 +49,13 @@ void GasWallCoupling::exchange(double dt)
     const WallViews w = wall_.deviceViews();
     const int n = gas_.cells();
     const WallParams p = params(wall_.coefficients());
-    forEach("wall exchange", n, serial_, WallExchange{g.q, g.areaCell, w.radius, w.speed, w.dissipated, p, gamma_, dt});
+    if (p.as > 0.0) // one work item: a Thomas sweep along the tube (kernels/unilag/TubeWall.hpp)
+        forEach("wall exchange tension", 1, serial_,
+                WallExchangeTension{g.q, g.areaCell, w.radius, w.speed, w.dissipated, w.step, w.cPrime, w.rPrime, p,
+                                    gamma_, dt, gas_.spacing(), n});
+    else
+        forEach("wall exchange", n, serial_,
+                WallExchange{g.q, g.areaCell, w.radius, w.speed, w.dissipated, p, gamma_, dt});
     forEach("wall face areas", n + 1, serial_, FaceAreasFromCells{g.areaFace, g.areaCell, n});
 }
 
@@ -68,7 +74,8 @@ double GasWallCoupling::stableStep() const
     const WallViews w = wall_.deviceViews();
     double omega = 0.0;
     reduce("wall max frequency", gas_.cells(), serial_,
-           MaxWallFrequency{g.q, w.radius, params(wall_.coefficients()), gamma_}, Kokkos::Max<double>(omega));
+           MaxWallFrequency{g.q, w.radius, params(wall_.coefficients()), gamma_, gas_.spacing()},
+           Kokkos::Max<double>(omega));
     return std::min(gas_.stableStep(), wallResolution_ / omega);
 }
 

@@ -1,7 +1,8 @@
 /*! \file GasWallCoupling.hpp
  *  \brief Gas in a straight tube with an expandable wall R(s, t) (rod rigid): Strang splitting of the gas
  *  transport at frozen areas (TubeGas, SSP-RK2) and a per-cell exchange step in which the wall and the gas's
- *  internal energy trade energy exactly (discrete gradient). Total energy gas + wall is conserved to the
+ *  internal energy trade energy exactly (discrete gradient; with axial tension the cells are coupled and the
+ *  step solves one tridiagonal Newton system per half step). Total energy gas + wall is conserved to the
  *  Newton tolerance and round-off with closed ends; docs/tube-wall.md.
  */
 #pragma once
@@ -20,14 +21,15 @@ struct CoupledEnergy
 {
     double gas = 0;
     WallEnergy wall;
-    double total() const { return gas + wall.kinetic + wall.elastic + wall.outside; }
+    double total() const { return gas + wall.kinetic + wall.elastic + wall.outside + wall.tension; }
 };
 
 class GasWallCoupling
 {
   public:
-    /*! wallResolution: the step is at most wallResolution / omega_max, omega = (W''/a)^(1/2) the wall's own
-     *  frequency (the exchange is stable for any step, but a wall oscillation needs steps to be resolved). */
+    /*! wallResolution: the step is at most wallResolution / omega_max, omega = ((W'' + 4 as/h^2)/a)^(1/2) the
+     *  wall's own frequency bound (the exchange is stable for any step, but a wall oscillation needs steps to be
+     *  resolved). */
     GasWallCoupling(const GasSetup& gas, const WallCoefficients& wall, double wallResolution = 0.3);
 
     //! Wall radius and speed, then the gas primitives (per volume) at the cell centres; the areas pi R^2.

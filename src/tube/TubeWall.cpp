@@ -12,14 +12,16 @@ using namespace unilag::wall;
 
 WallCoefficients wallCoefficients(const WallMaterial& m, double pExt)
 {
-    if (!(m.thickness > 0.0) || !(m.restRadius > 0.0) || !(m.youngModulus > 0.0) || !(m.poisson < 1.0))
-        throw std::invalid_argument("wallCoefficients: need h, R0, E > 0 and nu < 1");
+    if (!(m.thickness > 0.0) || !(m.restRadius > 0.0) || !(m.youngModulus > 0.0) || !(m.poisson < 1.0) ||
+        !(m.axialTension >= 0.0))
+        throw std::invalid_argument("wallCoefficients: need h, R0, E > 0, nu < 1 and N_x >= 0");
     WallCoefficients w;
     w.a = m.density * 2.0 * pi * m.restRadius * m.thickness;
     w.b = 2.0 * pi * m.youngModulus * m.thickness / (m.restRadius * (1.0 - m.poisson * m.poisson));
     w.c = m.viscosity;
     w.restRadius = m.restRadius;
     w.pExt = pExt;
+    w.as = 2.0 * pi * m.restRadius * m.axialTension;
     return w;
 }
 
@@ -61,15 +63,22 @@ TubeWall::TubeWall(const WallCoefficients& coefficients, int cells, double lengt
     : s_(std::make_unique<State>())
 {
     if (cells < 1 || !(length > 0.0) || !(coefficients.a > 0.0) || !(coefficients.b >= 0.0) ||
-        !(coefficients.c >= 0.0) || !(coefficients.restRadius > 0.0))
-        throw std::invalid_argument("TubeWall: need cells >= 1, length > 0, a > 0, b >= 0, c >= 0, R0 > 0");
+        !(coefficients.c >= 0.0) || !(coefficients.restRadius > 0.0) || !(coefficients.as >= 0.0))
+        throw std::invalid_argument("TubeWall: need cells >= 1, length > 0, a > 0, b >= 0, c >= 0, R0 > 0, as >= 0");
     State& s = *s_;
     s.coefficients = coefficients;
     s.n = cells;
     s.h = length / cells;
     s.serial = serial;
-    s.views =
-        WallViews{ScalarView("wall R", cells), ScalarView("wall dR/dt", cells), ScalarView("wall dissipated", cells)};
+    s.views.radius = ScalarView("wall R", cells);
+    s.views.speed = ScalarView("wall dR/dt", cells);
+    s.views.dissipated = ScalarView("wall dissipated", cells);
+    if (coefficients.as > 0.0)
+    {
+        s.views.step = ScalarView("wall tension step", cells);
+        s.views.cPrime = ScalarView("wall tension c'", cells);
+        s.views.rPrime = ScalarView("wall tension r'", cells);
+    }
     const double r0 = coefficients.restRadius;
     setState([r0](double) { return r0; }, [](double) { return 0.0; });
 }
@@ -108,7 +117,7 @@ WallEnergy TubeWall::energy() const
 {
     const State& s = *s_;
     const WallCoefficients& c = s.coefficients;
-    const WallParams p{c.a, c.b, c.c, c.restRadius, c.pExt};
+    const WallParams p{c.a, c.b, c.c, c.restRadius, c.pExt, c.as};
     double parts[3] = {0, 0, 0};
     for (int k = 0; k < 3; ++k)
         reduce("wall energy", s.n, s.serial, WallEnergyPart{s.views.radius, s.views.speed, p, s.h, k}, parts[k]);
@@ -116,6 +125,7 @@ WallEnergy TubeWall::energy() const
     e.kinetic = parts[0];
     e.elastic = parts[1];
     e.outside = parts[2];
+    reduce("wall tension energy", s.n - 1, s.serial, WallTensionEnergy{s.views.radius, c.as, s.h}, e.tension);
     reduce("wall dissipated", s.n, s.serial, SumTimesH{s.views.dissipated, s.h}, e.dissipated);
     return e;
 }

@@ -26,9 +26,10 @@ struct WallMaterial
     double density = 1000.0;     //!< rho_w
     double restRadius = 5.0e-3;  //!< R0 (mid-surface radius of the unloaded wall = the gas radius at rest)
     double viscosity = 0.0;      //!< c: viscous wall force -c dR/dt per unit length (0: none)
+    double axialTension = 0.0;   //!< N_x: axial membrane pre-tension, force per unit circumference (N/m; >= 0)
 };
 
-/*! Per unit length of tube: a V^2/2 kinetic, b (R - R0)^2/2 elastic, viscous force -c V. */
+/*! Per unit length of tube: a V^2/2 kinetic, b (R - R0)^2/2 elastic, as R'^2/2 tension, viscous force -c V. */
 struct WallCoefficients
 {
     double a = 1.0;          //!< wall mass per length
@@ -36,10 +37,13 @@ struct WallCoefficients
     double c = 0.0;          //!< viscous coefficient
     double restRadius = 1.0; //!< R0
     double pExt = 0.0;       //!< outside pressure
+    double as = 0.0;         //!< axial tension coefficient (wall equation a R'' = ... + as R_ss)
 };
 
 //! a = rho_w 2 pi R0 h;  b = 2 pi E h / (R0 (1 - nu^2))  (hoop strain (R - R0)/R0 with the axial strain held
-//! at zero by the rigid rod: plane-strain modulus E/(1 - nu^2)); c = the material's viscosity.
+//! at zero by the rigid rod: plane-strain modulus E/(1 - nu^2)); c = the material's viscosity;
+//! as = 2 pi R0 N_x (a generator tilted by R' is longer by R'^2/2 per length; N_x on the circumference 2 pi R0
+//! does that work: energy N_x 2 pi R0 R'^2/2 per length).
 WallCoefficients wallCoefficients(const WallMaterial& m, double pExt);
 
 //! Quasi-static wall law (p - p_ext) 2 pi R = b (R - R0): the radius at pressure p (throws past the
@@ -59,7 +63,7 @@ struct WallFields
 //! Parts of the wall energy (summed over cells times h).
 struct WallEnergy
 {
-    double kinetic = 0, elastic = 0, outside = 0, dissipated = 0;
+    double kinetic = 0, elastic = 0, outside = 0, tension = 0, dissipated = 0;
 };
 
 class TubeWall

@@ -1,15 +1,21 @@
 #!/usr/bin/env python3
-"""tube_modules.py gas|artery OUTPUT_DIR [options]: asserts a gas or artery scene's output (src/tube/GasRun,
-ArteryRun).
+"""tube_modules.py gas|wall|artery OUTPUT_DIR [options]: asserts a gas, gas + wall or artery scene's output
+(src/tube/GasRun, ArteryRun).
 
 gas: the files are there; the leading shock's speed measured from the run within --speed-tol (relative) of the
 exact one and its position within two cells of the exact one; L1(density) below --l1 when given.
+wall: the files are there; tube.xmf's last dump carries radius, wall_speed, density, pressure, velocity and mach per cell;
+mass and gas + wall energy kept to 1e-10 (both ends closed); the wall at the left end, where the gas is nearly at
+rest at the end, on the quasi-static law (p - p_ext) 2 pi R = b (R - R0) within --quasi-static; the front faster than the compliant speed c1 and slower than the gas's a1, its speed within
+--speed-tol of --speed.
 artery: the files are there; periodic within --cycles cycles; the mean outlet pressure within 1% of
 mean(Q) (R1 + R2), what a periodic RCR outlet must give (docs/tube-artery.md); waveforms.csv has every sample.
 Prints "tube_modules: PASS" or the failures."""
 import argparse
 import csv
+import glob
 import json
+import math
 import os
 import sys
 
@@ -34,6 +40,34 @@ def check_gas(out, a):
     return fails
 
 
+def check_wall(out, a):
+    fails = files_present(out, ["summary.json", "scene.yaml", "tube.xmf"])
+    dumps = sorted(glob.glob(os.path.join(out, "tube_*.xmf")))  # tube.xmf includes one file per dump
+    xmf = open(dumps[-1]).read() if dumps else ""
+    for name in ["radius", "wall_speed", "density", "pressure", "velocity", "mach"]:
+        if f'Attribute Name="{name}"' not in xmf:
+            fails.append(f"tube.xmf has no per-cell {name}")
+    s = json.load(open(os.path.join(out, "summary.json")))
+    dm, de = s["mass_relative_change"], s["energy_relative_change"]
+    r0, w = s["wall_rest_radius"], s["wall"]
+    radius = s["radius_final_left_end"]
+    load = 2 * math.pi * (s["pressure_final_left_end"] - w["outside_pressure"])
+    quasi_static = w["b"] * r0 / (w["b"] - load)
+    speed, a1, c1 = s["shock_speed"], s["sound_speed_right"], s["compliant_speed_right"]
+    print(f"dM/M {dm:.3g}, dE/E {de:.3g}; R/R0 at the left end {radius / r0:.6g}, quasi-static "
+          f"{quasi_static / r0:.6g}; front speed {speed:.6g} "
+          f"(U/a1 {speed / a1:.4f}, U/c1 {speed / c1:.4f})")
+    if not (abs(dm) <= 1e-10 and abs(de) <= 1e-10):
+        fails.append("mass or gas + wall energy not conserved to 1e-10")
+    if not abs(radius - quasi_static) <= a.quasi_static * radius:
+        fails.append(f"R at the left end {radius} vs the quasi-static {quasi_static}: more than {a.quasi_static}")
+    if not c1 < speed < a1:
+        fails.append("the front is not between the compliant speed c1 and the gas sound speed a1")
+    if a.speed is not None and not abs(speed - a.speed) <= a.speed_tol * a.speed:
+        fails.append(f"front speed {speed} vs {a.speed}: more than {a.speed_tol} relative")
+    return fails
+
+
 def check_artery(out, a):
     fails = files_present(out, ["summary.json", "scene.yaml", "tube.xmf", "waveforms.csv"])
     s = json.load(open(os.path.join(out, "summary.json")))
@@ -55,13 +89,15 @@ def check_artery(out, a):
 
 def main():
     p = argparse.ArgumentParser()
-    p.add_argument("kind", choices=["gas", "artery"])
+    p.add_argument("kind", choices=["gas", "wall", "artery"])
     p.add_argument("out")
     p.add_argument("--speed-tol", type=float, default=0.01)
     p.add_argument("--l1", type=float)
     p.add_argument("--cycles", type=int, default=6)
+    p.add_argument("--speed", type=float, help="wall: the expected front speed")
+    p.add_argument("--quasi-static", type=float, default=0.01, help="wall: tolerance of R on the quasi-static law")
     a = p.parse_args()
-    fails = (check_gas if a.kind == "gas" else check_artery)(a.out, a)
+    fails = {"gas": check_gas, "wall": check_wall, "artery": check_artery}[a.kind](a.out, a)
     for f in fails:
         print("FAIL:", f)
     print("tube_modules: PASS" if not fails else "tube_modules: FAIL")
