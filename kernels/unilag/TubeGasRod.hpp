@@ -10,6 +10,8 @@
  *    H = sum_k (P_k - F_k).M_k^-1 (P_k - F_k)/2 + sum_j h [m_j^2 / (2 xi_j c_j) + xi_j e_j(Q_j) + p_ext Q_j]
  *        + (rod elastic and rotary energy),  Q_j = A_j |r'_j|,
  *  and the gas's load on the rod (GasSegmentForce) is exactly -dH/dr: energy and momentum are exchanged as one.
+ *  An expandable wall R_j (tube.md 1.3: kinetic a R_t^2 |Gamma| / 2, elastic b (R - R0)^2 |Gamma| / 2, A = pi R^2)
+ *  adds sum_j h [pi_R^2 / (2 a sqrt c) + sqrt c b (R - R0)^2 / 2] with its momentum pi_R = a sqrt(c) R_t held.
  *  Kokkos core only; every kernel writes its own node or cell.
  */
 #pragma once
@@ -18,6 +20,7 @@
 
 #include "unilag/TubeGas.hpp"
 #include "unilag/TubeRod.hpp"
+#include "unilag/TubeWall.hpp"
 
 namespace unilag::gasrod
 {
@@ -168,6 +171,10 @@ struct GasSegmentForce
     ScalarView area, entropy;
     Vec3View load;
     double gamma, pExt;
+    //! the wall (when `wall`): radius, momentum pi_R per unit s; its load (b (R - R0)^2 - pi_R^2 / (a c)) t / 2
+    bool wall = false;
+    ScalarView radius, wallMomentum;
+    wall::WallParams w{};
     KOKKOS_INLINE_FUNCTION void operator()(int j) const
     {
         const V3 xs = segmentTangent(rod, j);
@@ -176,6 +183,11 @@ struct GasSegmentForce
         const double xi = q(j, 0), m = q(j, 1);
         const double rho = xi / (area(j) * root), p = entropy(j) * Kokkos::Experimental::pow(rho, gamma);
         V3 n = (-m * m / (xi * c * c)) * xs - ((p - pExt) * area(j)) * t;
+        if (wall)
+        {
+            const double stretch = radius(j) - w.restRadius, pr = wallMomentum(j);
+            n = n + (0.5 * w.b * stretch * stretch - 0.5 * pr * pr / (w.a * c)) * t;
+        }
         for (int k = j; k <= j + 1; ++k)
         {
             const V3 v = loadV3(rod.velocity, k);
@@ -300,6 +312,89 @@ struct CellGasEnergy
         const double c = dot(xs, xs), volume = area(j) * Kokkos::Experimental::sqrt(c), xi = q(j, 0);
         const double p = entropy(j) * Kokkos::Experimental::pow(xi / volume, gamma);
         const double e[3] = {q(j, 1) * q(j, 1) / (2.0 * xi * c), volume * p / (gamma - 1.0), pExt * volume};
+        sum += rod.h * e[part];
+    }
+};
+
+/*! Cells: the wall's momentum pi_R = a sqrt(c) R_t from its speed (toSpeed false), or the speed back from the
+ *  momentum on the rod as it now is (toSpeed true): the rod part holds pi_R, not R_t. */
+struct WallMomentum
+{
+    RodViews rod;
+    ScalarView speed, momentum;
+    double a;
+    bool toSpeed;
+    KOKKOS_INLINE_FUNCTION void operator()(int j) const
+    {
+        const V3 xs = segmentTangent(rod, j);
+        const double scale = a * Kokkos::Experimental::sqrt(dot(xs, xs));
+        if (toSpeed)
+            speed(j) = momentum(j) / scale;
+        else
+            momentum(j) = scale * speed(j);
+    }
+};
+
+/*! Cells: the wall's exchange with the gas on the frozen rod (tube.md 1.5 with |Gamma| = sqrt c): the cell's
+ *  H = a sqrt(c) V^2/2 + sqrt(c) [b (R - R0)^2/2 + p_ext pi R^2] + U(pi R^2 sqrt c), U the gas's internal energy
+ *  per unit s, is sqrt(c) times the rigid tube's with U / sqrt(c) for U: the rigid discrete-gradient step
+ *  (kernels/unilag/TubeWall.hpp) solves it, and the gas gains the whole adiabatic U change. No axial tension. */
+struct WallExchangeOnRod
+{
+    StateView q;
+    ScalarView areaCell, radius, speed, dissipated;
+    MetricView cell;
+    wall::WallParams w;
+    double gamma, dt;
+    KOKKOS_INLINE_FUNCTION void operator()(int j) const
+    {
+        const double c = cell(j, 0), root = Kokkos::Experimental::sqrt(c), xi = q(j, 0);
+        const double v = (q(j, 1) / xi - cell(j, 1)) / c * root;
+        const double internal = q(j, 2) + 0.5 * xi * (cell(j, 2) - v * v); // U = E - xi (v^2 - k)/2
+        const wall::CellExchange x{w, internal / root, radius(j), speed(j), gamma, dt};
+        const double d = wall::solveExchange(x), v1 = 2.0 * d / dt - x.v0, vm = 0.5 * (x.v0 + v1);
+        q(j, 2) += wall::adiabaticEnergyChange(internal, x.r0, d, gamma);
+        radius(j) = x.r0 + d;
+        speed(j) = v1;
+        areaCell(j) = wall::pi * radius(j) * radius(j);
+        dissipated(j) += root * w.c * dt * vm * vm;
+    }
+};
+
+//! max over cells of the wall's own frequency (W''/a)^(1/2) on the rod (the step's resolution bound; U / sqrt c as
+//! in WallExchangeOnRod).
+struct WallFrequencyOnRod
+{
+    StateView q;
+    ScalarView radius;
+    MetricView cell;
+    wall::WallParams w;
+    double gamma;
+    KOKKOS_INLINE_FUNCTION void operator()(int j, double& m) const
+    {
+        const double c = cell(j, 0), root = Kokkos::Experimental::sqrt(c), xi = q(j, 0);
+        const double v = (q(j, 1) / xi - cell(j, 1)) / c * root;
+        const double internal = q(j, 2) + 0.5 * xi * (cell(j, 2) - v * v);
+        const double omega =
+            Kokkos::Experimental::sqrt(wall::potentialCurvature(w, internal / root, radius(j), gamma) / w.a);
+        m = omega > m ? omega : m;
+    }
+};
+
+//! Cells, one part of the wall's energy times h: 0 kinetic a sqrt(c) V^2/2, 1 elastic sqrt(c) b (R - R0)^2/2,
+//! 2 the viscous loss so far.
+struct CellWallEnergy
+{
+    RodViews rod;
+    ScalarView radius, speed, dissipated;
+    wall::WallParams w;
+    int part;
+    KOKKOS_INLINE_FUNCTION void operator()(int j, double& sum) const
+    {
+        const V3 xs = segmentTangent(rod, j);
+        const double root = Kokkos::Experimental::sqrt(dot(xs, xs)), stretch = radius(j) - w.restRadius;
+        const double e[3] = {0.5 * w.a * root * speed(j) * speed(j), 0.5 * w.b * root * stretch * stretch,
+                             dissipated(j)};
         sum += rod.h * e[part];
     }
 };

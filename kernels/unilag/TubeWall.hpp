@@ -37,38 +37,6 @@ struct WallParams
     double a, b, c, restRadius, pExt, as;
 };
 
-/*! parallel_for / parallel_reduce on the default execution space, or on Kokkos::Serial for small tubes on a
- *  host backend (GasSetup::serialBelow: a few microseconds of work per launch lose to an OpenMP fork/join, by
- *  100 times on the loaded 2-core box). Host-side helpers. */
-template <class Functor> void forEach(const char* name, int n, bool serial, const Functor& f)
-{
-#if defined(KOKKOS_ENABLE_SERIAL)
-    if constexpr (Kokkos::SpaceAccessibility<Kokkos::Serial, gas::MemSpace>::accessible)
-        if (serial)
-        {
-            Kokkos::parallel_for(name, Kokkos::RangePolicy<Kokkos::Serial>(0, n), f);
-            return;
-        }
-#endif
-    (void)serial;
-    Kokkos::parallel_for(name, Kokkos::RangePolicy<gas::ExecSpace>(0, n), f);
-}
-
-template <class Functor, class Result>
-void reduce(const char* name, int n, bool serial, const Functor& f, Result&& result)
-{
-#if defined(KOKKOS_ENABLE_SERIAL)
-    if constexpr (Kokkos::SpaceAccessibility<Kokkos::Serial, gas::MemSpace>::accessible)
-        if (serial)
-        {
-            Kokkos::parallel_reduce(name, Kokkos::RangePolicy<Kokkos::Serial>(0, n), f, result);
-            return;
-        }
-#endif
-    (void)serial;
-    Kokkos::parallel_reduce(name, Kokkos::RangePolicy<gas::ExecSpace>(0, n), f, result);
-}
-
 //! The wall state per cell on the device: R, dR/dt, energy taken by the viscous force so far; scratch for the
 //! exchange with axial tension (its Newton step and Thomas sweep; allocated only when a_s > 0).
 struct WallViews
@@ -124,6 +92,20 @@ struct CellExchange
     }
 };
 
+//! d = R1 - R0 from F(d) = 0 by Newton, from the free flight d = dt V0.
+KOKKOS_INLINE_FUNCTION double solveExchange(const CellExchange& x)
+{
+    double d = x.dt * x.v0;
+    for (int it = 0; it < 40; ++it)
+    {
+        const double step = x.residual(d) / x.slope(d);
+        d -= step;
+        if (Kokkos::Experimental::fabs(step) <= 1e-16 * x.r0)
+            break;
+    }
+    return d;
+}
+
 //! The state after cell j's exchange by d: V1 = 2 d/dt - V0, E += U1 - U0, A = pi R1^2, the viscous loss summed.
 KOKKOS_INLINE_FUNCTION void finishExchange(const StateView& q, const ScalarView& areaCell, const ScalarView& radius,
                                            const ScalarView& speed, const ScalarView& dissipated, const CellExchange& x,
@@ -149,15 +131,7 @@ struct WallExchange
     KOKKOS_INLINE_FUNCTION void operator()(int j) const
     {
         const CellExchange x{w, internalEnergy(q, j), radius(j), speed(j), gamma, dt};
-        double d = dt * x.v0;
-        for (int it = 0; it < 40; ++it)
-        {
-            const double step = x.residual(d) / x.slope(d);
-            d -= step;
-            if (Kokkos::Experimental::fabs(step) <= 1e-16 * x.r0)
-                break;
-        }
-        finishExchange(q, areaCell, radius, speed, dissipated, x, j, d);
+        finishExchange(q, areaCell, radius, speed, dissipated, x, j, solveExchange(x));
     }
 };
 

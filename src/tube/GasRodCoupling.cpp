@@ -31,6 +31,14 @@ void validate(const GasRodSetup& s)
         fail("both gas ends must be walls (the end caps move with the rod)");
     if (!(s.area > 0.0) || !(s.outsidePressure >= 0.0) || !(s.rodStepFactor > 0.0 && s.rodStepFactor <= 1.0))
         fail("need area > 0, outside pressure >= 0 and 0 < rodStepFactor <= 1");
+    if (s.wall && (s.wall->as != 0.0 || s.wall->pExt != s.outsidePressure || !(s.wallResolution > 0.0)))
+        fail("an expandable wall on the free rod needs as = 0 (no axial tension), its pExt equal to the outside "
+             "pressure, and wallResolution > 0");
+}
+
+wall::WallParams wallParams(const WallCoefficients& c)
+{
+    return wall::WallParams{c.a, c.b, c.c, c.restRadius, c.pExt, c.as};
 }
 
 GasSetup gasOnRod(const GasRodSetup& s)
@@ -54,14 +62,18 @@ struct GasRodCoupling::State
     Vec3View startVelocity, midVelocity;   // the gas part's iteration on the tube's velocity
     Vec3View startMomentum, startPosition; // the rod part's implicit kick and drift
     StateView startGas;                    // the gas's state at the start of the gas part
-    gasrod::ScalarView entropy, area;
+    gasrod::ScalarView entropy;
+    gasrod::ScalarView radius, speed, wallMomentum, dissipated; // the expandable wall (sized 0 without)
     State(const GasRodSetup& s)
         : setup(s), rod(s.rod, s.rodSetup), gas(gasOnRod(s)), n(s.rodSetup.segments), serial(n < s.gas.serialBelow),
           momentum("gas rod momentum", n + 1), load("gas rod load", n), startVelocity("gas rod v0", n + 1),
           midVelocity("gas rod v mid", n + 1), startMomentum("gas rod P0", n + 1), startPosition("gas rod r0", n + 1),
-          startGas("gas rod q0", n), entropy("gas rod entropy", n), area("gas rod area", n)
+          startGas("gas rod q0", n), entropy("gas rod entropy", n), radius("gas rod R", s.wall ? n : 0),
+          speed("gas rod R_t", s.wall ? n : 0), wallMomentum("gas rod pi_R", s.wall ? n : 0),
+          dissipated("gas rod wall loss", s.wall ? n : 0)
     {
     }
+    gasrod::ScalarView area() const { return gas.deviceViews().areaCell; } // A = pi R^2 with a wall
     RodViews rodViews() const { return rod.deviceViews(); }
     gas::GasViews gasViews() const { return gas.deviceViews(); }
 };
@@ -72,7 +84,11 @@ GasRodCoupling::GasRodCoupling(const GasRodSetup& setup)
     s_ = std::make_unique<State>(setup);
     const double a = setup.area;
     s_->gas.setArea([a](double) { return a; });
-    Kokkos::deep_copy(s_->area, a);
+    if (setup.wall)
+    {
+        const double r0 = setup.wall->restRadius;
+        setWall([r0](double) { return r0; }, [](double) { return 0.0; });
+    }
     setGas([](double) { return GasPrimitive{}; });
 }
 
@@ -108,13 +124,31 @@ void GasRodCoupling::metricFrom(const Vec3View& velocity)
     rod.velocity = velocity;
     forEach("gas rod metric", s.n, s.serial, SegmentMetric{rod, g.metricCell});
     forEach("gas rod face metric", s.n + 1, s.serial, FaceMetric{g.metricCell, g.metricFace, s.n});
-    forEach("gas rod restate", s.n, s.serial, RestateEnergy{g.q, s.area, s.entropy, g.metricCell, s.setup.gas.gamma});
+    forEach("gas rod restate", s.n, s.serial, RestateEnergy{g.q, s.area(), s.entropy, g.metricCell, s.setup.gas.gamma});
 }
 
 void GasRodCoupling::velocities()
 {
     State& s = *s_;
     forEach("gas rod velocities", s.n + 1, s.serial, VelocityFromMomentum{s.rodViews(), s.gasViews().q, s.momentum});
+}
+
+void GasRodCoupling::setWall(const std::function<double(double)>& radius, const std::function<double(double)>& speed)
+{
+    State& s = *s_;
+    if (!s.setup.wall)
+        throw std::logic_error("GasRodCoupling::setWall: the setup has no expandable wall");
+    auto r = Kokkos::create_mirror_view(s.radius);
+    auto v = Kokkos::create_mirror_view(s.speed);
+    const double h = s.rod.spacing();
+    for (int j = 0; j < s.n; ++j)
+        r(j) = radius((j + 0.5) * h), v(j) = speed((j + 0.5) * h);
+    Kokkos::deep_copy(s.radius, r);
+    Kokkos::deep_copy(s.speed, v);
+    Kokkos::deep_copy(s.dissipated, 0.0);
+    const gas::GasViews g = s.gasViews();
+    forEach("gas rod wall areas", s.n, s.serial, wall::CellAreasFromRadius{g.areaCell, s.radius});
+    forEach("gas rod wall face areas", s.n + 1, s.serial, wall::FaceAreasFromCells{g.areaFace, g.areaCell, s.n});
 }
 
 void GasRodCoupling::setGas(const std::function<GasPrimitive(double)>& state)
@@ -124,13 +158,22 @@ void GasRodCoupling::setGas(const std::function<GasPrimitive(double)>& state)
     forEach("gas rod metric", s.n, s.serial, SegmentMetric{s.rodViews(), g.metricCell});
     forEach("gas rod face metric", s.n + 1, s.serial, FaceMetric{g.metricCell, g.metricFace, s.n});
     s.gas.setState(state);
-    forEach("gas rod entropy", s.n, s.serial, SaveEntropy{g.q, s.area, s.entropy, g.metricCell, s.setup.gas.gamma});
+    forEach("gas rod entropy", s.n, s.serial, SaveEntropy{g.q, s.area(), s.entropy, g.metricCell, s.setup.gas.gamma});
     forEach("gas rod momentum", s.n + 1, s.serial, TotalMomentum{s.rodViews(), g.q, s.momentum});
 }
 
 double GasRodCoupling::stableStep() const
 {
-    return s_->gas.stableStep();
+    const State& s = *s_;
+    const double gasStep = s.gas.stableStep();
+    if (!s.setup.wall)
+        return gasStep;
+    double omega = 0.0;
+    reduce("gas rod wall frequency", s.n, s.serial,
+           WallFrequencyOnRod{s.gasViews().q, s.radius, s.gasViews().metricCell, wallParams(*s.setup.wall),
+                              s.setup.gas.gamma},
+           Kokkos::Max<double>(omega));
+    return std::min(gasStep, s.setup.wallResolution / omega);
 }
 
 /*! P = P0 + tau (elastic load + the gas's load at the current velocities), velocities from P; the elastic load
@@ -139,9 +182,17 @@ void GasRodCoupling::kickFrom(const Vec3View& start, double tau, bool spins)
 {
     State& s = *s_;
     const RodViews rod = s.rodViews();
-    forEach(
-        "gas rod load", s.n, s.serial,
-        GasSegmentForce{rod, s.gasViews().q, s.area, s.entropy, s.load, s.setup.gas.gamma, s.setup.outsidePressure});
+    GasSegmentForce load;
+    load.rod = rod, load.q = s.gasViews().q, load.area = s.area(), load.entropy = s.entropy, load.load = s.load;
+    load.gamma = s.setup.gas.gamma, load.pExt = s.setup.outsidePressure;
+    if (s.setup.wall)
+    {
+        load.wall = true;
+        load.radius = s.radius;
+        load.wallMomentum = s.wallMomentum;
+        load.w = wallParams(*s.setup.wall);
+    }
+    forEach("gas rod load", s.n, s.serial, load);
     if (start.data() != s.momentum.data())
         Kokkos::deep_copy(s.momentum, start);
     forEach("gas rod kick", s.n + 1, s.serial, CoupledKick{rod, s.load, s.momentum, tau, spins});
@@ -151,11 +202,15 @@ void GasRodCoupling::kickFrom(const Vec3View& start, double tau, bool spins)
 /*! The rod with the gas carried, sub-cycled at its own stable step by the generalised leapfrog (Stoermer-Verlet
  *  for a Hamiltonian that is not separable, Hairer-Lubich-Wanner VI.3): the gas's load depends on the
  *  velocities and the mass on the tangents, so the first half kick and the drift are implicit (fixed-point
- *  passes, contraction ~ xi / alpha), the second half kick explicit. The explicit kick-drift-kick drifts the
- *  total energy (about 2e-6 per time unit at cfl 0.8 on the soft tube of the tests); this one stays bounded. */
+ *  passes, contraction ~ xi / alpha), the second half kick explicit. (The explicit kick-drift-kick's energy
+ *  error did not fall when only the gas's step was refined.) An expandable wall's momentum pi_R = a sqrt(c) R_t is
+ *  held through the part, its speed follows the stretch. */
 void GasRodCoupling::rodPart(double tau)
 {
     State& s = *s_;
+    if (s.setup.wall)
+        forEach("gas rod wall momentum", s.n, s.serial,
+                WallMomentum{s.rodViews(), s.speed, s.wallMomentum, s.setup.wall->a, false});
     const double limit = s.setup.rodStepFactor * s.rod.stableStep();
     const int substeps = std::max(1, static_cast<int>(std::ceil(tau / limit)));
     const double h = tau / substeps;
@@ -178,6 +233,23 @@ void GasRodCoupling::rodPart(double tau)
         s.rod.storeElasticLoads();
         kickFrom(s.momentum, 0.5 * h, true);
     }
+    if (s.setup.wall)
+        forEach("gas rod wall speed", s.n, s.serial,
+                WallMomentum{s.rodViews(), s.speed, s.wallMomentum, s.setup.wall->a, true});
+}
+
+//! The expandable wall's exchange with the gas on the frozen rod and frozen gas transport (energy-exact per cell).
+void GasRodCoupling::wallPart(double tau)
+{
+    State& s = *s_;
+    if (!s.setup.wall)
+        return;
+    updateMetric();
+    const gas::GasViews g = s.gasViews();
+    forEach("gas rod wall exchange", s.n, s.serial,
+            WallExchangeOnRod{g.q, g.areaCell, s.radius, s.speed, s.dissipated, g.metricCell, wallParams(*s.setup.wall),
+                              s.setup.gas.gamma, tau});
+    forEach("gas rod wall face areas", s.n + 1, s.serial, wall::FaceAreasFromCells{g.areaFace, g.areaCell, s.n});
 }
 
 /*! Gas transport on the frozen rod; the wall's velocities then follow the gas's new momentum (P held). The gas
@@ -205,13 +277,15 @@ void GasRodCoupling::gasPart(double tau)
         s.gas.step(tau);
         velocities();
     }
-    forEach("gas rod entropy", s.n, s.serial, SaveEntropy{g.q, s.area, s.entropy, g.metricCell, s.setup.gas.gamma});
+    forEach("gas rod entropy", s.n, s.serial, SaveEntropy{g.q, s.area(), s.entropy, g.metricCell, s.setup.gas.gamma});
 }
 
 void GasRodCoupling::step(double dt)
 {
     rodPart(0.5 * dt);
+    wallPart(0.5 * dt);
     gasPart(dt);
+    wallPart(0.5 * dt);
     rodPart(0.5 * dt);
     updateMetric(); // the gas's state as the rod now is (fields, stableStep)
 }
@@ -238,11 +312,20 @@ GasRodTotals GasRodCoupling::totals() const
     double parts[3] = {0, 0, 0}, transverse = 0;
     for (int part = 0; part < 3; ++part)
         reduce("gas rod energy", s.n, s.serial,
-               CellGasEnergy{rod, q, s.area, s.entropy, s.setup.gas.gamma, s.setup.outsidePressure, part}, parts[part]);
+               CellGasEnergy{rod, q, s.area(), s.entropy, s.setup.gas.gamma, s.setup.outsidePressure, part},
+               parts[part]);
     reduce("gas rod transverse", s.n + 1, s.serial, NodeGasKinetic{rod, q}, transverse);
     t.gasKinetic = parts[0] + transverse;
     t.gasInternal = parts[1];
     t.outside = parts[2];
+    if (s.setup.wall)
+    {
+        double w[3] = {0, 0, 0};
+        for (int part = 0; part < 3; ++part)
+            reduce("gas rod wall energy", s.n, s.serial,
+                   CellWallEnergy{rod, s.radius, s.speed, s.dissipated, wallParams(*s.setup.wall), part}, w[part]);
+        t.wallKinetic = w[0], t.wallElastic = w[1], t.wallDissipated = w[2];
+    }
     const auto p = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), s.momentum);
     for (int k = 0; k <= s.n; ++k)
         for (int a = 0; a < 3; ++a)

@@ -3,12 +3,15 @@
 #include <cmath>
 #include <stdexcept>
 
+#include "tube/SmallLaunch.hpp"
 #include "unilag/TubeWall.hpp"
 
 namespace unilag::tube
 {
 
 using namespace unilag::wall;
+using launch::forEach; // small tubes run on Kokkos::Serial (GasSetup::serialBelow)
+using launch::reduce;
 
 WallCoefficients wallCoefficients(const WallMaterial& m, double pExt)
 {
