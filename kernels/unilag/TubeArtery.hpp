@@ -197,6 +197,7 @@ struct ArteryFaceFlux
     double dt, a, b;
     double inletQ; //!< Q_in at this stage's time
     int n;
+    bool record = true; //!< write this stage's boundary states (output); false copies them from bcIn
 
     KOKKOS_INLINE_FUNCTION double slope(int i, int m) const
     {
@@ -274,8 +275,8 @@ struct ArteryFaceFlux
             inletState(A, Q);
             boundaryFlux(0, A, Q);
             advanceSlot(kVolumeIn, Q);
-            bcOut(kInletArea) = A;
-            bcOut(kInletFlow) = Q;
+            bcOut(kInletArea) = record ? A : bcIn(kInletArea);
+            bcOut(kInletFlow) = record ? Q : bcIn(kInletFlow);
         }
         else
         {
@@ -284,8 +285,8 @@ struct ArteryFaceFlux
             advanceSlot(kVolumeOut, Q);
             const double pC = bcIn(kWindkesselPressure);
             advanceSlot(kWindkesselPressure, k.outlet == OutletKind::Windkessel ? (Q - pC / k.R2) / k.C : 0.0);
-            bcOut(kOutletArea) = A;
-            bcOut(kOutletFlow) = Q;
+            bcOut(kOutletArea) = record ? A : bcIn(kOutletArea);
+            bcOut(kOutletFlow) = record ? Q : bcIn(kOutletFlow);
         }
     }
 };

@@ -77,7 +77,8 @@ class Artery
 
   private:
     void runStage(artery::StateView in, artery::StateView base, artery::StateView out, artery::BoundaryView bcIn,
-                  artery::BoundaryView bcBase, artery::BoundaryView bcOut, double dt, double weight, double t);
+                  artery::BoundaryView bcBase, artery::BoundaryView bcOut, double dt, double weight, double t,
+                  bool record = true);
     double maxSpeed() const;
     void stepHeun(double dt);
     void stepRK3(double dt);
