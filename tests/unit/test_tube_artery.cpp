@@ -6,7 +6,10 @@
 //   friction (mu = 4e-3): crest decay / exp(-K_r t / (2 A0)) = 1.013
 //   reflected crest / closed-end crest = 0.0004, 0.5002, -0.4996 for R_t = 0, 0.5, -0.5
 // Volume: closed ends exact to the printed digits after 2000 steps; inlet flux + RCR balance 4.6e-16 of V.
-// RCR steady: p_out / (Q (R1 + R2)) and p_C / (Q R2) = 1 to 1e-7. All 8 tests: 0.6 s on one thread.
+// RCR steady: p_out / (Q (R1 + R2)) and p_C / (Q R2) = 1 to 1e-7. These 8 tests: 0.6 s on one thread.
+// Pedley-Luo tension (T = F_z / (4 pi A0)): standing modes n = 1, 2 of a 1 cm vessel, omega / k sqrt(c0^2 +
+// A0 T k^2 / rho) = 1.000047, 0.999645 with the tension raising omega by 22.5%, 73.2%; grid noise at mu = 144
+// decays (0.006 in 3000 steps); volume with tension balances as without; T = 0 reproduces 07f845e's figures.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -370,8 +373,8 @@ TEST(TubeArtery, TensionKeepsVolumeBalance)
     cfg.serialBelow = 0; // the default space (OpenMP, CUDA): RK3's third buffers alias as on Serial
     Artery b(cfg);
     const double w0 = b.volume();
-    b.advanceTo(0.2);
-    EXPECT_GT(b.volumeIn(), 1e-6);
+    b.advanceTo(0.1); // ~470 RK3 steps: OpenMP launches dominate on a loaded box
+    EXPECT_GT(b.volumeIn(), 5e-7);
     EXPECT_NEAR((b.volume() - w0 - (b.volumeIn() - b.volumeOut())) / w0, 0.0, 1e-13);
 }
 
