@@ -1,7 +1,8 @@
 // The common carotid artery (Boileau et al. 2015 benchmark 2, parameters as openBF encodes them; tube.md 4.3)
 // run to a periodic state with src/tube/Artery. docs/tube-artery.md; apps/tube_artery_plot.py draws the CSVs.
 //
-//   tube_artery_study [--cells N] [--out DIR] [--prefill] [--throughput N] [--no-serial]  (Kokkos flags pass)
+//   tube_artery_study [--cells N] [--out DIR] [--prefill] [--throughput N] [--no-serial] [--tension F]
+//   (Kokkos flags pass)
 //
 // The benchmark's inlet waveform (openBF's CCA inlet file) is not available here: the inlet flow is a stated
 // stand-in, Q(t) = Qd + Qs g(t; 0.15 s, 0.06 s) + Qn g(t; 0.42 s, 0.04 s), g a unit Gaussian bump repeated with
@@ -12,6 +13,7 @@
 // --prefill starts the Windkessel at p_C = mean Q R2 (openBF starts from rest, the default here too).
 // --throughput N: times 2000 steps of an N-cell vessel instead (cell-steps per second, no output).
 // --no-serial: run small vessels on the default execution space too (Artery runs < 512 cells on Kokkos::Serial).
+// --tension F: the wall's axial force F_z (N), the Pedley-Luo term -T d_ss A with T = F_z / (4 pi A0) (0: none).
 #include <Kokkos_Core.hpp>
 
 #include <chrono>
@@ -106,9 +108,11 @@ void writeWaveforms(const std::string& path, const std::vector<std::vector<doubl
     std::fclose(f);
 }
 
-int throughput(int cells, bool serial)
+int throughput(int cells, bool serial, double tension)
 {
-    Artery a(carotid(cells, serial));
+    ArteryConfig cfg = carotid(cells, serial);
+    cfg.tension = tension;
+    Artery a(cfg);
     a.step();
     const auto t0 = std::chrono::steady_clock::now();
     for (int k = 0; k < 2000; ++k)
@@ -124,6 +128,7 @@ struct Options
 {
     int cells = 64, throughputCells = 0;
     bool prefill = false, serial = true;
+    double tension = 0; //!< F_z, N
     std::string out = ".";
 };
 
@@ -140,6 +145,8 @@ Options parse(int argc, char** argv)
             o.throughputCells = std::atoi(argv[++i]);
         else if (!std::strcmp(argv[i], "--prefill"))
             o.prefill = true;
+        else if (!std::strcmp(argv[i], "--tension") && i + 1 < argc)
+            o.tension = std::atof(argv[++i]);
         else if (!std::strcmp(argv[i], "--no-serial"))
             o.serial = false;
     }
@@ -148,7 +155,8 @@ Options parse(int argc, char** argv)
 
 int runCarotid(const Options& o)
 {
-    const ArteryConfig cfg = carotid(o.cells, o.serial);
+    ArteryConfig cfg = carotid(o.cells, o.serial);
+    cfg.tension = o.tension;
     Artery a(cfg);
     if (o.prefill)
         a.setState(std::vector<double>(o.cells, a.area0()), std::vector<double>(o.cells, 0.0), kMeanFlow * cfg.R2);
@@ -195,5 +203,5 @@ int main(int argc, char** argv)
 {
     Kokkos::ScopeGuard guard(argc, argv);
     const Options o = parse(argc, argv);
-    return o.throughputCells > 0 ? throughput(o.throughputCells, o.serial) : runCarotid(o);
+    return o.throughputCells > 0 ? throughput(o.throughputCells, o.serial, o.tension) : runCarotid(o);
 }

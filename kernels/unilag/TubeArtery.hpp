@@ -11,6 +11,15 @@
  *  from a boundary state solved from the outgoing Riemann invariant W = u +- 4c; the end face's thread is the only
  *  writer of that end's boundary record (Windkessel pressure, volume that has crossed the face), which advances
  *  with the same RK weights as the cells, so volume balances to round-off.
+ *
+ *  Longitudinal wall tension (Pedley & Luo 1998; tube.md 4.1): p = beta (sqrt(A/A0) - 1) - T d_ss A. An axial
+ *  pre-tension force F_z (N) in a wall of small axial slope adds -N_z d_ss R to the Laplace law, N_z = F_z/(2 pi R0)
+ *  per unit circumference; with d_ss R ~ d_ss A / (2 pi R0) near A0 this is T = F_z / (4 pi A0) (Pa). The momentum
+ *  equation gains the source +(A/rho) T d_sss A, which is dispersive: linearised about (A0, 0) without friction,
+ *  omega^2 = k^2 (c0^2 + A0 T k^2 / rho). It is the centred five-point third difference at cell centres, with
+ *  mirror ghosts A_{-1-j} = A_j at both ends (clamped wall slope, d_s A = 0). T = 0 skips it and keeps Heun, bit
+ *  for bit; T > 0 steps with SSP-RK3, whose stability region holds a segment of the imaginary axis, where the
+ *  dispersive eigenvalues lie (Heun's only touches it at 0), with the step limit of kTensionStepFactor.
  */
 #pragma once
 
@@ -23,6 +32,13 @@ using ExecSpace = Kokkos::DefaultExecutionSpace;
 using MemSpace = ExecSpace::memory_space;
 using StateView = Kokkos::View<double* [2], MemSpace>; //!< (A, Q) per cell
 using BoundaryView = Kokkos::View<double[8], MemSpace>;
+
+/*! The tension's step limit: the dispersive eigenvalues reach omega ~ sqrt(A T / rho) / dx^2 (a fourth-order operator
+ *  overall: mass flux d_s Q times the third difference). A von Neumann analysis of the linearised scheme (MUSCL with
+ *  central slopes, HLL, SSP-RK3) gives the largest stable dt sqrt(A0 T / rho) / dx^2 as 0.93, 1.09, 0.88, 0.87 at
+ *  mu = sqrt(A0 T / rho) / (c0 dx) = 1, 3, 100, 1000; 1.5 keeps cfl <= 1 inside it at every mu (0.77 of it at large
+ *  mu with cfl = 1). */
+constexpr double kTensionStepFactor = 1.5;
 
 //! Slots of the boundary record.
 enum BoundarySlot : int
@@ -56,13 +72,18 @@ struct ArteryConstants
     OutletKind outlet = OutletKind::Reflection;
     double reflection = 0;
     double R1 = 0, R2 = 0, C = 0;
+    double tension = 0; //!< T (Pa) of p = beta (sqrt(A/A0) - 1) - T d_ss A; 0 switches the term off
+    int n = 0;          //!< cells
     // Derived, so that a face state costs three square roots: sqrt(A), c, and the alpha != 1 root.
     double sqrtA0 = 0, speedK = 0, fluxK = 0; //!< sqrt(A0), beta/(2 rho sqrt(A0)), beta/(3 rho sqrt(A0))
+    double tensionK = 0, tensionSpeedK = 0;   //!< T/(2 rho dx^3); kTensionStepFactor sqrt(T/rho)/dx
     void setDerived()
     {
         sqrtA0 = Kokkos::Experimental::sqrt(A0);
         speedK = beta / (2.0 * rho * sqrtA0);
         fluxK = beta / (3.0 * rho * sqrtA0);
+        tensionK = tension / (2.0 * rho * dx * dx * dx);
+        tensionSpeedK = kTensionStepFactor * Kokkos::Experimental::sqrt(tension / rho) / dx;
     }
 };
 
@@ -176,6 +197,7 @@ struct ArteryFaceFlux
     double dt, a, b;
     double inletQ; //!< Q_in at this stage's time
     int n;
+    bool record = true; //!< write this stage's boundary states (output); false copies them from bcIn
 
     KOKKOS_INLINE_FUNCTION double slope(int i, int m) const
     {
@@ -253,8 +275,8 @@ struct ArteryFaceFlux
             inletState(A, Q);
             boundaryFlux(0, A, Q);
             advanceSlot(kVolumeIn, Q);
-            bcOut(kInletArea) = A;
-            bcOut(kInletFlow) = Q;
+            bcOut(kInletArea) = record ? A : bcIn(kInletArea);
+            bcOut(kInletFlow) = record ? Q : bcIn(kInletFlow);
         }
         else
         {
@@ -263,14 +285,15 @@ struct ArteryFaceFlux
             advanceSlot(kVolumeOut, Q);
             const double pC = bcIn(kWindkesselPressure);
             advanceSlot(kWindkesselPressure, k.outlet == OutletKind::Windkessel ? (Q - pC / k.R2) / k.C : 0.0);
-            bcOut(kOutletArea) = A;
-            bcOut(kOutletFlow) = Q;
+            bcOut(kOutletArea) = record ? A : bcIn(kOutletArea);
+            bcOut(kOutletFlow) = record ? Q : bcIn(kOutletFlow);
         }
     }
 };
 
-/*! Cell update of one SSP-RK2 stage: out = a base + b (in + dt L(in)), (a, b) = (0, 1) then (1/2, 1/2);
- *  L = flux difference plus the friction source -K_r Q/A. `out` may alias `base`, not `in`. */
+/*! Cell update of one Runge-Kutta stage: out = a base + b (in + dt L(in)); SSP-RK2 (a, b) = (0, 1), (1/2, 1/2),
+ *  SSP-RK3 (0, 1), (3/4, 1/4), (1/3, 2/3). L = flux difference plus the friction source -K_r Q/A and, for T > 0, the
+ *  tension source (A/rho) T d_sss A. `out` may alias `base`, not `in`. */
 struct ArteryCellUpdate
 {
     ArteryConstants k;
@@ -278,11 +301,31 @@ struct ArteryCellUpdate
     Kokkos::View<double* [2], MemSpace> flux;
     double dt, a, b;
 
+    //! Area of cell j, mirrored about the end faces for j < 0 or j >= n (d_s A = 0 there); n >= 2 keeps j in range.
+    KOKKOS_INLINE_FUNCTION double mirroredArea(int j) const
+    {
+        if (j < 0)
+            j = -1 - j;
+        else if (j >= k.n)
+            j = 2 * k.n - 1 - j;
+        return in(j, 0);
+    }
+    //! (A/rho) T d_sss A with (A_{i+2} - 2 A_{i+1} + 2 A_{i-1} - A_{i-2}) / (2 dx^3): second order, and exact on the
+    //! closed-end standing modes cos(n pi s / L), whose mirror images continue them.
+    KOKKOS_INLINE_FUNCTION double tensionSource(int i, double A) const
+    {
+        const double d3 =
+            mirroredArea(i + 2) - 2.0 * mirroredArea(i + 1) + 2.0 * mirroredArea(i - 1) - mirroredArea(i - 2);
+        return k.tensionK * A * d3;
+    }
+
     KOKKOS_INLINE_FUNCTION void operator()(const int i) const
     {
         const double A = in(i, 0), Q = in(i, 1);
         const double rateA = -(flux(i + 1, 0) - flux(i, 0)) / k.dx;
-        const double rateQ = -(flux(i + 1, 1) - flux(i, 1)) / k.dx - k.frictionK * Q / A;
+        double rateQ = -(flux(i + 1, 1) - flux(i, 1)) / k.dx - k.frictionK * Q / A;
+        if (k.tension > 0)
+            rateQ += tensionSource(i, A);
         const double newA = a * base(i, 0) + b * (A + dt * rateA);
         const double newQ = a * base(i, 1) + b * (Q + dt * rateQ);
         out(i, 0) = newA;
@@ -290,7 +333,8 @@ struct ArteryCellUpdate
     }
 };
 
-//! Largest |characteristic speed| over the cells (for the CFL time step).
+/*! Largest |characteristic speed| over the cells (for the CFL time step); with T > 0 each cell adds its
+ *  dispersive speed kTensionStepFactor sqrt(A T / rho) / dx, so that dt <= cfl dx^2 / (kTensionStepFactor ...). */
 struct ArteryMaxSpeed
 {
     ArteryConstants k;
@@ -298,7 +342,10 @@ struct ArteryMaxSpeed
     KOKKOS_INLINE_FUNCTION void operator()(const int i, double& acc) const
     {
         const ArteryFaceState s = faceState(k, U(i, 0), U(i, 1));
-        acc = Kokkos::Experimental::fmax(acc, Kokkos::Experimental::fmax(-s.lo, s.hi));
+        double speed = Kokkos::Experimental::fmax(-s.lo, s.hi);
+        if (k.tension > 0)
+            speed += k.tensionSpeedK * Kokkos::Experimental::sqrt(U(i, 0));
+        acc = Kokkos::Experimental::fmax(acc, speed);
     }
 };
 

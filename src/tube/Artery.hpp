@@ -33,12 +33,15 @@ struct ArteryConfig
     artery::OutletKind outlet = artery::OutletKind::Reflection;
     double reflection = 0;        //!< R_t for OutletKind::Reflection
     double R1 = 0, R2 = 0, C = 0; //!< RCR Windkessel
+    double tension = 0;           //!< F_z, axial pre-tension force of the wall (N); 0: no Pedley-Luo term
 };
 
 //! Wall stiffness beta = sqrt(pi/A0) h E / (1 - nu^2) (Pa) and the Moens-Korteweg speed from E, h, R0 directly.
 double arteryBeta(const ArteryConfig& cfg);
 double moensKortewegSpeed(const ArteryConfig& cfg);  //!< sqrt(E h / (2 rho R0 (1 - nu^2)))
 double frictionCoefficient(const ArteryConfig& cfg); //!< K_r = 2 (gamma_p + 2) pi mu / rho
+//! T = F_z / (4 pi A0) (Pa), the coefficient of p = ... - T d_ss A (TubeArtery.hpp: membrane with axial force F_z).
+double tensionCoefficient(const ArteryConfig& cfg);
 
 class Artery
 {
@@ -47,7 +50,8 @@ class Artery
 
     //! Host state (A, Q per cell, size cells each); also resets the boundary record (p_C, volumes).
     void setState(const std::vector<double>& area, const std::vector<double>& flow, double windkesselPressure = 0);
-    //! One SSP-RK2 step with dt = min(cfl dx / max|lambda|, dtMax); returns the dt taken.
+    //! One SSP-RK2 step (SSP-RK3 with tension) with dt = min(cfl dx / max|lambda|, dtMax); returns the dt taken.
+    //! With tension, lambda includes the dispersive speed (TubeArtery.hpp, kTensionStepFactor).
     double step(double dtMax = 1e30);
     //! Steps until time() == t exactly (the last step is shortened).
     void advanceTo(double t);
@@ -63,20 +67,27 @@ class Artery
     double volumeOut() const; //!< same on the outlet face
     double windkesselPressure() const;
     void hostState(std::vector<double>& area, std::vector<double>& flow) const;
-    double pressure(double area) const { return artery::pressure(constants_, area); }
+    double pressure(double area) const { return artery::pressure(constants_, area); } //!< the elastic part, Phi(A)
+    //! -T d_ss A in cell i of a host area field, with the kernels' mirror ends (0 without tension).
+    double tensionPressure(const std::vector<double>& area, int i) const;
+    //! Per-cell wall-law pressure Phi(A) - T d_ss A (exactly Phi(A) without tension).
+    std::vector<double> wallPressure(const std::vector<double>& area) const;
     //! (A, Q) on the inlet and outlet faces from the last stage.
     void boundaryStates(double& Ain, double& Qin, double& Aout, double& Qout) const;
 
   private:
     void runStage(artery::StateView in, artery::StateView base, artery::StateView out, artery::BoundaryView bcIn,
-                  artery::BoundaryView bcBase, artery::BoundaryView bcOut, double dt, double weight, double t);
+                  artery::BoundaryView bcBase, artery::BoundaryView bcOut, double dt, double weight, double t,
+                  bool record = true);
     double maxSpeed() const;
+    void stepHeun(double dt);
+    void stepRK3(double dt);
     double boundarySlot(int s) const;
 
     ArteryConfig cfg_;
     artery::ArteryConstants constants_;
-    artery::StateView U_, U1_, flux_; //!< flux_: faces 0..cells
-    artery::BoundaryView bc_, bc1_;
+    artery::StateView U_, U1_, U2_, flux_; //!< flux_: faces 0..cells; U2_ only with tension (RK3)
+    artery::BoundaryView bc_, bc1_, bc2_;
     bool serial_ = false;
     double time_ = 0;
     long long cellSteps_ = 0;

@@ -78,12 +78,9 @@ class ArteryTimeSystem : public TimeSystem
     {
         std::vector<double> area, flow;
         artery_.hostState(area, flow);
-        std::vector<double> pressure(area.size()), velocity(area.size());
+        std::vector<double> pressure = artery_.wallPressure(area), velocity(area.size());
         for (std::size_t i = 0; i < area.size(); ++i)
-        {
-            pressure[i] = artery_.pressure(area[i]);
             velocity[i] = flow[i] / area[i];
-        }
         writer_.writeStep(index, t, coords_,
                           {{"area", 1, area.data()},
                            {"flow", 1, flow.data()},
@@ -98,17 +95,21 @@ class ArteryTimeSystem : public TimeSystem
     std::vector<double> time, samples; //!< samples: kProbeWidth per time
 
   private:
-    //! p and Q on the inlet face, mid-vessel (mean of the two middle cells) and the outlet face.
+    /*! p and Q on the inlet face, mid-vessel (mean of the two middle cells) and the outlet face. Mid-vessel p is
+     *  the wall law's, tension included; the end faces' is Phi(A_b), the pressure their boundary laws impose. */
     std::vector<double> probes() const
     {
         std::vector<double> A, Q;
         artery_.hostState(A, Q);
         double Ain, Qin, Aout, Qout;
         artery_.boundaryStates(Ain, Qin, Aout, Qout);
-        const std::size_t m = A.size() / 2;
-        const double Amid = A.size() % 2 ? A[m] : 0.5 * (A[m - 1] + A[m]);
-        const double Qmid = A.size() % 2 ? Q[m] : 0.5 * (Q[m - 1] + Q[m]);
-        return {artery_.pressure(Ain), Qin, artery_.pressure(Amid), Qmid, artery_.pressure(Aout), Qout};
+        const int m = int(A.size()) / 2;
+        const bool odd = A.size() % 2;
+        const double Amid = odd ? A[m] : 0.5 * (A[m - 1] + A[m]);
+        const double Qmid = odd ? Q[m] : 0.5 * (Q[m - 1] + Q[m]);
+        const double pT = odd ? artery_.tensionPressure(A, m)
+                              : 0.5 * (artery_.tensionPressure(A, m - 1) + artery_.tensionPressure(A, m));
+        return {artery_.pressure(Ain), Qin, artery_.pressure(Amid) + pT, Qmid, artery_.pressure(Aout), Qout};
     }
     Artery& artery_;
     double sample_;
@@ -189,6 +190,7 @@ void writeSummary(const TubeScene& scene, const Artery& artery, const LoopResult
     s.text("inlet", a.inlet.standIn ? "stand_in" : "harmonics");
     s.text("outlet", a.config.outlet == artery::OutletKind::Windkessel ? "rcr" : "reflection");
     s.number("period", a.inlet.period).number("wave_speed", moensKortewegSpeed(a.config));
+    s.number("tension_N", a.config.tension).number("tension_coefficient_Pa", tensionCoefficient(a.config));
     s.integer("cycles", f.cyclesRun).integer("cycles_to_periodicity", f.periodicAfter);
     s.number("periodic_tolerance", a.periodicTolerance);
     s.number("last_cycle_change_pressure", f.changeP).number("last_cycle_change_flow", f.changeQ);

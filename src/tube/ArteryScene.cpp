@@ -111,6 +111,7 @@ ArterySettings readArtery(ConfigNode& a)
     c.density = a.positive("density", c.density);
     c.viscosity = a.nonNegative("viscosity", c.viscosity);
     c.gammaProfile = a.positive("gamma_profile", c.gammaProfile);
+    c.tension = a.nonNegative("tension", c.tension); // F_z (N); the law's T = F_z / (4 pi A0)
     c.cells = int(a.integer("cells", c.cells, 4, 1000000));
     c.cfl = a.positive("cfl", c.cfl);
     if (c.cfl > 1.0)

@@ -28,7 +28,7 @@ struct InletWaveform
 
 struct ArterySettings
 {
-    ArteryConfig config; //!< vessel, blood, cells, outlet (inletFlux set by the run from `inlet`)
+    ArteryConfig config; //!< vessel, wall tension, blood, cells, outlet (inletFlux set by the run from `inlet`)
     InletWaveform inlet;
     int cycles = 10;                 //!< the run's length, in periods
     int samplesPerCycle = 200;       //!< probe samples a period (waveforms.csv, periodicity)

@@ -6,7 +6,10 @@
 //   friction (mu = 4e-3): crest decay / exp(-K_r t / (2 A0)) = 1.013
 //   reflected crest / closed-end crest = 0.0004, 0.5002, -0.4996 for R_t = 0, 0.5, -0.5
 // Volume: closed ends exact to the printed digits after 2000 steps; inlet flux + RCR balance 4.6e-16 of V.
-// RCR steady: p_out / (Q (R1 + R2)) and p_C / (Q R2) = 1 to 1e-7. All 8 tests: 0.6 s on one thread.
+// RCR steady: p_out / (Q (R1 + R2)) and p_C / (Q R2) = 1 to 1e-7. These 8 tests: 0.6 s on one thread.
+// Pedley-Luo tension (T = F_z / (4 pi A0)): standing modes n = 1, 2 of a 1 cm vessel, omega / k sqrt(c0^2 +
+// A0 T k^2 / rho) = 1.000047, 0.999645 with the tension raising omega by 22.5%, 73.2%; grid noise at mu = 144
+// decays (0.006 in 3000 steps); volume with tension balances as without; T = 0 reproduces 07f845e's figures.
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -211,6 +214,168 @@ TEST(TubeArtery, ReflectionCoefficientOutlet)
     const double closed = reflectedCrest(1.0);
     for (double Rt : {0.0, 0.5, -0.5})
         EXPECT_NEAR(reflectedCrest(Rt) / closed, Rt, 0.01) << "R_t = " << Rt;
+}
+
+//! A 1 cm vessel without friction, closed inlet, totally reflecting outlet (R_t = 1): standing modes cos(n pi s/L).
+ArteryConfig tensedVessel(double tension)
+{
+    ArteryConfig c = longVessel(0.0, 64);
+    c.length = 0.01;
+    c.reflection = 1.0;
+    c.tension = tension;
+    return c;
+}
+
+//! Without tension the scheme is the one before the Pedley-Luo term: 300 steps of carotidWithWindkessel(64) give the
+//! figures printed by commit 07f845e (before the term existed); only round-off (FMA contraction on a device) may
+//! differ.
+TEST(TubeArtery, ZeroTensionKeepsStoredResult)
+{
+    Artery a(carotidWithWindkessel(64));
+    for (int k = 0; k < 300; ++k)
+        a.step();
+    std::vector<double> A, Q;
+    a.hostState(A, Q);
+    EXPECT_NEAR(a.time() / 0.078104166091080063, 1.0, 1e-12);
+    EXPECT_NEAR(a.volume() / 2.9960685836703233e-06, 1.0, 1e-12);
+    EXPECT_NEAR(a.windkesselPressure() / 1727.3614597999549, 1.0, 1e-12);
+    EXPECT_NEAR(A[32] / 2.3776969617734001e-05, 1.0, 1e-12);
+    EXPECT_NEAR(Q[32] / 6.8967234137099979e-06, 1.0, 1e-12);
+    for (int i = 0; i < 64; ++i) // the written pressure is Phi(A), bit for bit
+        ASSERT_EQ(a.wallPressure(A)[i], a.pressure(A[i])) << "cell " << i;
+}
+
+TEST(TubeArtery, WallPressureCarriesTension)
+{
+    // A = A0 (1 + c s^2) has d_ss A = 2 c A0: interior cells give Phi(A) - 2 c A0 T to round-off.
+    ArteryConfig cfg = tensedVessel(2.0);
+    Artery a(cfg);
+    const double c = 100.0, T = tensionCoefficient(cfg);
+    EXPECT_NEAR(T / (2.0 / (4 * kPi * a.area0())), 1.0, 1e-14);
+    std::vector<double> A(cfg.cells);
+    for (int i = 0; i < cfg.cells; ++i)
+        A[i] = a.area0() * (1 + c * std::pow((i + 0.5) * a.dx(), 2));
+    const std::vector<double> p = a.wallPressure(A);
+    for (int i = 1; i < cfg.cells - 1; ++i)
+        EXPECT_NEAR((p[i] - a.pressure(A[i])) / (-2 * c * a.area0() * T), 1.0, 1e-6) << "cell " << i;
+}
+
+//! Angular frequency of the standing mode cos(k s), k = n pi / L, started at rest with amplitude 1e-4 A0: from the
+//! zero crossings of its projection sum (A - A0) cos(k s), interpolated linearly (they are inflexion points).
+//! `growth`: the projection's largest |value| after the first crossing over its initial value.
+double standingFrequency(const ArteryConfig& cfg, int mode, int halfPeriods, double& growth)
+{
+    Artery a(cfg);
+    const double k = mode * kPi / cfg.length;
+    std::vector<double> A(cfg.cells), Q(cfg.cells, 0.0), shape(cfg.cells);
+    for (int i = 0; i < cfg.cells; ++i)
+    {
+        shape[i] = std::cos(k * (i + 0.5) * a.dx());
+        A[i] = a.area0() * (1 + 1e-4 * shape[i]);
+    }
+    a.setState(A, Q);
+    auto projection = [&]
+    {
+        a.hostState(A, Q);
+        double m = 0;
+        for (int i = 0; i < cfg.cells; ++i)
+            m += (A[i] - a.area0()) * shape[i];
+        return m;
+    };
+    const double m0 = projection();
+    double prev = m0, tPrev = 0, peak = 0;
+    std::vector<double> crossings;
+    for (int step = 0; step < 1000000 && int(crossings.size()) <= halfPeriods; ++step)
+    {
+        a.step();
+        const double m = projection();
+        if (!std::isfinite(m))
+            break; // unstable: no frequency
+        if (!crossings.empty())
+            peak = std::max(peak, std::fabs(m));
+        if (m * prev < 0)
+            crossings.push_back(tPrev + (a.time() - tPrev) * prev / (prev - m));
+        prev = m;
+        tPrev = a.time();
+    }
+    growth = peak / m0;
+    if (int(crossings.size()) <= halfPeriods)
+        return NAN;
+    return kPi * halfPeriods / (crossings.back() - crossings.front());
+}
+
+TEST(TubeArtery, TensionDispersionOfStandingWaves)
+{
+    // Linearised about (A0, 0), mu = 0: a_t + q_s = 0, q_t + c0^2 a_s - (A0 T/rho) a_sss = 0, so
+    // omega^2 = k^2 (c0^2 + A0 T k^2 / rho). T is set for A0 T k1^2 / (rho c0^2) = 1/2 at n = 1: the tension raises
+    // omega by 22.5% (n = 1) and 73% (n = 2; k^4 against k^2). 128 and 64 cells per wavelength. Measured
+    // omega / theory: 0.99983, 0.99941; without tension omega / (c0 k): 0.99986, 0.99947.
+    const double c0 = moensKortewegSpeed(tensedVessel(0.0)), rho = tensedVessel(0.0).density;
+    const double k1 = kPi / 0.01, A0 = kPi * std::pow(tensedVessel(0.0).radius, 2);
+    const double T = 0.5 * rho * c0 * c0 / (A0 * k1 * k1);
+    const ArteryConfig cfg = tensedVessel(4 * kPi * A0 * T); // F_z = 4 pi A0 T = 2.69 N
+    EXPECT_NEAR(tensionCoefficient(cfg) / T, 1.0, 1e-14);
+    for (int n : {1, 2})
+    {
+        const double k = n * k1, theory = k * std::sqrt(c0 * c0 + A0 * T * k * k / rho);
+        ASSERT_GT(theory / (c0 * k), 1.1); // the tension matters by at least 10%
+        double growth = 0;
+        const double omega = standingFrequency(cfg, n, 6, growth);
+        EXPECT_NEAR(omega / theory, 1.0, 0.01) << "mode " << n;
+        EXPECT_LE(growth, 1.0) << "mode " << n; // the HLL dissipation damps; the RK3 step limit must not amplify
+    }
+}
+
+TEST(TubeArtery, TensionStepLimitKeepsGridNoiseBounded)
+{
+    // Grid-scale noise (+-1e-4 A0 alternating, the least resolved mode) under a tension 100 times that of the
+    // dispersion test: mu = sqrt(A0 T / rho) / (c0 dx) = 144, where the dispersive step limit rules (dt / the
+    // tensionless one = 1/217). 3000 steps: the noise must not grow.
+    ArteryConfig cfg = tensedVessel(269.0);
+    Artery a(cfg);
+    std::vector<double> A(cfg.cells), Q(cfg.cells, 0.0);
+    for (int i = 0; i < cfg.cells; ++i)
+        A[i] = a.area0() * (1 + (i % 2 ? 1e-4 : -1e-4) * std::sin(kPi * (i + 0.5) / cfg.cells));
+    a.setState(A, Q);
+    auto maxDeviation = [&]
+    {
+        double d = 0;
+        for (double x : A)
+            if (!(std::fabs(x - a.area0()) <= d))
+                d = std::fabs(x - a.area0()); // a NaN stays: std::max would drop it
+        return d;
+    };
+    const double maxDev0 = maxDeviation();
+    for (int k = 0; k < 3000; ++k)
+        a.step();
+    a.hostState(A, Q);
+    const double maxDev = maxDeviation();
+    EXPECT_TRUE(std::isfinite(maxDev));
+    EXPECT_LE(maxDev, maxDev0);
+}
+
+TEST(TubeArtery, TensionKeepsVolumeBalance)
+{
+    // The tension acts on Q only and the RK3 stages advance the boundary records with the cells' weights.
+    ArteryConfig closed = longVessel(4e-3, 64);
+    closed.length = 0.3;
+    closed.outlet = OutletKind::Closed;
+    closed.tension = 10.0; // N: mu = 0.93, the step 0.42 of the tensionless one
+    Artery a(closed);
+    setPulse(a, closed, 0.1, 0.02, 0.05);
+    const double v0 = a.volume();
+    for (int k = 0; k < 2000; ++k)
+        a.step();
+    EXPECT_NEAR(a.volume() / v0, 1.0, 1e-13);
+
+    ArteryConfig cfg = carotidWithWindkessel(32);
+    cfg.tension = 10.0;
+    cfg.serialBelow = 0; // the default space (OpenMP, CUDA): RK3's third buffers alias as on Serial
+    Artery b(cfg);
+    const double w0 = b.volume();
+    b.advanceTo(0.1); // ~470 RK3 steps: OpenMP launches dominate on a loaded box
+    EXPECT_GT(b.volumeIn(), 5e-7);
+    EXPECT_NEAR((b.volume() - w0 - (b.volumeIn() - b.volumeOut())) / w0, 0.0, 1e-13);
 }
 
 } // namespace
