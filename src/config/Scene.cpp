@@ -339,7 +339,10 @@ void readExact(ConfigNode& root, Scene& s)
 {
     ConfigNode x = root.sub("exact");
     s.exactSolution =
-        x.option<ExactSolution>("solution", "none", {{"none", ExactSolution::None}, {"sedov", ExactSolution::Sedov}});
+        x.option<ExactSolution>("solution", "none",
+                                {{"none", ExactSolution::None},
+                                 {"sedov", ExactSolution::Sedov},
+                                 {"stationary", ExactSolution::Stationary}});
     const bool sedov = s.exactSolution == ExactSolution::Sedov;
     s.exactTable = resolvePath(s.directory, x.text("table", "", sedov));
     if (sedov && !fs::exists(s.exactTable))
@@ -367,6 +370,16 @@ void readExact(ConfigNode& root, Scene& s)
     s.radiusTolerance = x.nonNegative("radius_tolerance", 0.0);
     s.maxL1Density = x.nonNegative("max_l1_density", 0.0);
     s.shockRadiusTolerance = x.nonNegative("shock_radius_tolerance", 0.0);
+    if (x.has("max_l2"))
+    {
+        if (s.exactSolution != ExactSolution::Stationary)
+            x.fail("max_l2", "bounds L2 errors against a stationary solution: needs 'solution: stationary'");
+        ConfigNode l2 = x.sub("max_l2");
+        const char* keys[3] = {"specific_volume", "velocity", "energy"};
+        for (int k = 0; k < 3; ++k)
+            s.maxL2[k] = l2.nonNegative(keys[k], 0.0);
+        l2.rejectUnknown();
+    }
     x.rejectUnknown();
 }
 

@@ -61,7 +61,8 @@ enum class ThermalKind
 enum class ExactSolution
 {
     None,
-    Sedov
+    Sedov,
+    Stationary //!< the initial state is the solution at all times (the isentropic vortex): L2 errors at the end
 };
 
 struct MaterialSpec
@@ -153,6 +154,8 @@ struct Scene
     double shockRadiusTolerance = 0.0; //!< --check bound (relative), 0 = none
     std::map<std::string, double> boundaryRadius; //!< exact mean distance from the origin of a boundary group
     double radiusTolerance = 0.0;                 //!< --check bound on it (relative), 0 = none
+    //! Stationary: --check bounds on the L2 errors of specific volume, velocity and total energy (0 = none)
+    double maxL2[3] = {0.0, 0.0, 0.0};
 
     Teuchos::ParameterList resolved; //!< the scene with defaults filled in, written beside the output
 };

@@ -10,6 +10,7 @@
 
 #include "io/OutputFolder.hpp"
 #include "solver/GprSetup.hpp"
+#include "solver/GprStationary.hpp"
 #include "solver/GprSystem.hpp"
 #include "solver/RunOptions.hpp"
 #include "solver/Summary.hpp"
@@ -50,12 +51,15 @@ Conservation conservation(const std::vector<double>& initial, const std::vector<
 struct ExactErrors
 {
     double l1 = -1.0, shock = -1.0, exactShock = 0.0;
+    StationaryErrors stationary; //!< exact.solution: stationary (L2 errors; -1 otherwise)
 };
 
 template <int D, class P> ExactErrors exactErrors(const GprModel<D, P>& md, double t)
 {
     ExactErrors e;
     e.exactShock = md.scene.exactShockRadius;
+    if (md.scene.exactSolution == ExactSolution::Stationary)
+        e.stationary = stationaryErrors(md);
     if (md.scene.exactSolution != ExactSolution::Sedov)
         return e;
     // R(t) = R(t_table) (t / t_table)^alpha, alpha = 2 / (d + 2) (planar energy release in d dimensions); the
@@ -132,6 +136,12 @@ int selfCheck(const GprModel<D, P>& md, const GprSystem<D, P>& sys, const Conser
     const Scene& scene = md.scene;
     if (scene.maxL1Density > 0.0)
         bound("L1(density) error", x.l1, scene.maxL1Density);
+    const char* l2Names[3] = {"L2 error of the specific volume", "L2 error of the velocity",
+                              "L2 error of the total energy"};
+    const double l2[3] = {x.stationary.specificVolume, x.stationary.velocity, x.stationary.energy};
+    for (int k = 0; k < 3; ++k)
+        if (scene.maxL2[k] > 0.0)
+            bound(l2Names[k], l2[k], scene.maxL2[k]);
     if (scene.shockRadiusTolerance > 0.0)
         bound("relative shock radius error", std::abs(x.shock - x.exactShock) / x.exactShock,
               scene.shockRadiusTolerance);
@@ -172,6 +182,11 @@ void writeSummary(const GprModel<D, P>& md, const GprSystem<D, P>& sys, const Ru
     s.number("max_node_force_imbalance", b.maxImbalance).number("volume_identity_defect", volumeIdentityDefect(md));
     if (x.l1 >= 0.0)
         s.number("l1_density_error", x.l1).number("shock_radius", x.shock).number("exact_shock_radius", x.exactShock);
+    if (x.stationary.specificVolume >= 0.0)
+        s.object("l2_error", {{"specific_volume", jsonNumber(x.stationary.specificVolume)},
+                              {"velocity", jsonNumber(x.stationary.velocity)},
+                              {"energy", jsonNumber(x.stationary.energy)},
+                              {"h_final", jsonNumber(x.stationary.h)}});
     std::vector<std::pair<std::string, std::string>> mean;
     for (std::size_t g = 0; g < radii.size(); ++g)
         mean.emplace_back(dm.boundaryNames[g], jsonNumber(radii[g]));
@@ -191,6 +206,9 @@ void writeSummary(const GprModel<D, P>& md, const GprSystem<D, P>& sys, const Ru
         std::printf("; Picard %.2f mean, %d max", picardMean, sys.picardMax());
     if (x.l1 >= 0.0)
         std::printf("; L1(density) %.4g, shock radius %.4g", x.l1, x.shock);
+    if (x.stationary.specificVolume >= 0.0)
+        std::printf("; L2 omega %.4g, v %.4g, E %.4g (h %.3g)", x.stationary.specificVolume, x.stationary.velocity,
+                    x.stationary.energy, x.stationary.h);
     std::printf("\nunilag: output in %s\n",
                 (sys.writer() ? sys.writer()->collectionPath() : md.scene.outputDirectory).c_str());
 }
