@@ -102,30 +102,17 @@ void shockStudy(const std::string& dir)
     std::printf("Rankine-Hugoniot on the computed shock (400 segments, alpha 0.02, EA 0.2):\n");
     for (double t0 : {0.12, 0.17, 0.22}) // the fits (t0 +- 0.02) must not overlap
     {
-        GasFields f;
-        std::vector<std::array<double, 3>> metric;
-        double s0 = 0;
-        const double cs = fittedShockSpeed(
-            [&](double t)
-            {
-                tube.advanceTo(t);
-                const double s = tube.gas().shockPosition(0.2);
-                if (std::abs(t - t0) < 1e-12)
-                    f = tube.gas().fields(), metric = tube.cellMetric(), s0 = s;
-                return s;
-            },
-            t0, 0.02, 9);
-        const ShockSide b = shockSide(f, metric, s0 - 0.03, s0 - 0.01, s0, kGamma);
-        const ShockSide a = shockSide(f, metric, s0 + 0.01, s0 + 0.03, s0, kGamma);
-        std::array<double, 3> m;
-        for (int k = 0; k < 3; ++k)
-            m[k] = 0.5 * (b.metric[k] + a.metric[k]);
-        const auto d = rankineHugoniotDefects(b, a, cs, m);
-        std::fprintf(csv, "%.3f,%.5f,%.5f,%.6f,%.4e,%.4e,%.3e,%.3e,%.3e,%.3e,%.5f\n", t0, s0, cs, m[0], m[1], m[2],
-                     b.metric[0] - a.metric[0], d[0], d[1], d[2], b.entropy(kGamma) - a.entropy(kGamma));
+        const ShockJump j = measureShockJump([&](double t) { tube.advanceTo(t); },
+                                             [&] { return tube.gas().shockPosition(0.2); },
+                                             [&] { return std::make_pair(tube.gas().fields(), tube.cellMetric()); },
+                                             t0, kGamma);
+        const auto& m = j.metric;
+        const auto& d = j.defects;
+        std::fprintf(csv, "%.3f,%.5f,%.5f,%.6f,%.4e,%.4e,%.3e,%.3e,%.3e,%.3e,%.5f\n", t0, j.position, j.speed, m[0],
+                     m[1], m[2], j.behind.metric[0] - j.ahead.metric[0], d[0], d[1], d[2], j.entropyJump);
         std::printf("  t %.2f: s %.4f, speed %.4f, |G|^2 %.5f, G.g %+.2e: defects %.1e %.1e %.1e, entropy jump "
                     "%.4f\n",
-                    t0, s0, cs, m[0], m[1], d[0], d[1], d[2], b.entropy(kGamma) - a.entropy(kGamma));
+                    t0, j.position, j.speed, m[0], m[1], d[0], d[1], d[2], j.entropyJump);
     }
     std::fclose(csv);
 }

@@ -48,6 +48,20 @@ KOKKOS_INLINE_FUNCTION int nodeFlags(const RodViews& rod, int k)
     return k == 0 ? rod.leftFlags : (k == rod.segments ? rod.rightFlags : 0);
 }
 
+//! The gas's speed relative to the tube, v = u sqrt(c) with u = (m / xi - g) / c, in cell j under `cell`'s metric.
+KOKKOS_INLINE_FUNCTION double relativeSpeed(const StateView& q, const MetricView& cell, int j)
+{
+    const double c = cell(j, 0);
+    return (q(j, 1) / q(j, 0) - cell(j, 1)) / c * Kokkos::Experimental::sqrt(c);
+}
+
+//! The gas's internal energy per unit s, U = E - xi (v^2 - k) / 2 (E = xi (e + v^2/2 - k/2), TubeGas.hpp).
+KOKKOS_INLINE_FUNCTION double gasInternalEnergy(const StateView& q, const MetricView& cell, int j)
+{
+    const double v = relativeSpeed(q, cell, j);
+    return q(j, 2) + 0.5 * q(j, 0) * (cell(j, 2) - v * v);
+}
+
 //! Cells: the gas's metric (c, g, k) = (|r'|^2, r'.r_t, |r_t|^2), r_t the mean of the two nodes' velocities.
 struct SegmentMetric
 {
@@ -233,9 +247,8 @@ struct SaveEntropy
     double gamma;
     KOKKOS_INLINE_FUNCTION void operator()(int j) const
     {
-        const double c = cell(j, 0), g = cell(j, 1), k = cell(j, 2), root = Kokkos::Experimental::sqrt(c);
-        const double volume = area(j) * root, rho = q(j, 0) / volume, v = (q(j, 1) / q(j, 0) - g) / c * root;
-        const double p = (gamma - 1.0) * ((q(j, 2) + 0.5 * k * q(j, 0)) / volume - 0.5 * rho * v * v);
+        const double volume = area(j) * Kokkos::Experimental::sqrt(cell(j, 0)), rho = q(j, 0) / volume;
+        const double p = (gamma - 1.0) * gasInternalEnergy(q, cell, j) / volume;
         entropy(j) = p / Kokkos::Experimental::pow(rho, gamma);
     }
 };
@@ -249,10 +262,9 @@ struct RestateEnergy
     double gamma;
     KOKKOS_INLINE_FUNCTION void operator()(int j) const
     {
-        const double c = cell(j, 0), g = cell(j, 1), k = cell(j, 2), root = Kokkos::Experimental::sqrt(c);
-        const double volume = area(j) * root, xi = q(j, 0), rho = xi / volume;
-        const double p = entropy(j) * Kokkos::Experimental::pow(rho, gamma), v = (q(j, 1) / xi - g) / c * root;
-        q(j, 2) = volume * p / (gamma - 1.0) + 0.5 * xi * (v * v - k);
+        const double volume = area(j) * Kokkos::Experimental::sqrt(cell(j, 0)), xi = q(j, 0), rho = xi / volume;
+        const double p = entropy(j) * Kokkos::Experimental::pow(rho, gamma), v = relativeSpeed(q, cell, j);
+        q(j, 2) = volume * p / (gamma - 1.0) + 0.5 * xi * (v * v - cell(j, 2));
     }
 };
 
@@ -348,9 +360,7 @@ struct WallExchangeOnRod
     double gamma, dt;
     KOKKOS_INLINE_FUNCTION void operator()(int j) const
     {
-        const double c = cell(j, 0), root = Kokkos::Experimental::sqrt(c), xi = q(j, 0);
-        const double v = (q(j, 1) / xi - cell(j, 1)) / c * root;
-        const double internal = q(j, 2) + 0.5 * xi * (cell(j, 2) - v * v); // U = E - xi (v^2 - k)/2
+        const double root = Kokkos::Experimental::sqrt(cell(j, 0)), internal = gasInternalEnergy(q, cell, j);
         const wall::CellExchange x{w, internal / root, radius(j), speed(j), gamma, dt};
         const double d = wall::solveExchange(x), v1 = 2.0 * d / dt - x.v0, vm = 0.5 * (x.v0 + v1);
         q(j, 2) += wall::adiabaticEnergyChange(internal, x.r0, d, gamma);
@@ -372,9 +382,7 @@ struct WallFrequencyOnRod
     double gamma;
     KOKKOS_INLINE_FUNCTION void operator()(int j, double& m) const
     {
-        const double c = cell(j, 0), root = Kokkos::Experimental::sqrt(c), xi = q(j, 0);
-        const double v = (q(j, 1) / xi - cell(j, 1)) / c * root;
-        const double internal = q(j, 2) + 0.5 * xi * (cell(j, 2) - v * v);
+        const double root = Kokkos::Experimental::sqrt(cell(j, 0)), internal = gasInternalEnergy(q, cell, j);
         const double omega =
             Kokkos::Experimental::sqrt(wall::potentialCurvature(w, internal / root, radius(j), gamma) / w.a);
         m = omega > m ? omega : m;

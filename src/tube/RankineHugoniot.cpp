@@ -36,8 +36,8 @@ ShockSide shockSide(const GasFields& f, const std::vector<std::array<double, 3>>
         if (f.s[j] < from || f.s[j] > to)
             continue;
         s.push_back(f.s[j]);
-        const double values[6] = {f.rho[j], f.u[j] / std::sqrt(metric[j][0]), f.p[j],
-                                  metric[j][0], metric[j][1], metric[j][2]};
+        const double values[6] = {f.rho[j],    f.u[j] / std::sqrt(metric[j][0]), f.p[j], metric[j][0], metric[j][1],
+                                  metric[j][2]};
         for (int k = 0; k < 6; ++k)
             q[k].push_back(values[k]);
     }
@@ -95,6 +95,32 @@ double fittedShockSpeed(const std::function<double(double)>& positionAt, double 
     for (int i = 0; i < samples; ++i)
         stx += (t[i] - mt) * (x[i] - mx), stt += (t[i] - mt) * (t[i] - mt);
     return stx / stt;
+}
+
+ShockJump measureShockJump(const std::function<void(double)>& advance, const std::function<double()>& position,
+                           const std::function<std::pair<GasFields, CellMetric>()>& snapshot, double t0, double gamma,
+                           const ShockWindows& w)
+{
+    ShockJump j;
+    std::pair<GasFields, CellMetric> state;
+    j.speed = fittedShockSpeed(
+        [&](double t)
+        {
+            advance(t);
+            const double s = position();
+            if (std::abs(t - t0) < 1e-12 * std::max(1.0, std::abs(t0)))
+                state = snapshot(), j.position = s;
+            return s;
+        },
+        t0, w.halfWidth, w.samples);
+    const double s0 = j.position;
+    j.behind = shockSide(state.first, state.second, s0 - w.far, s0 - w.near, s0, gamma);
+    j.ahead = shockSide(state.first, state.second, s0 + w.near, s0 + w.far, s0, gamma);
+    for (int k = 0; k < 3; ++k)
+        j.metric[k] = 0.5 * (j.behind.metric[k] + j.ahead.metric[k]);
+    j.defects = rankineHugoniotDefects(j.behind, j.ahead, j.speed, j.metric);
+    j.entropyJump = j.behind.entropy(gamma) - j.ahead.entropy(gamma);
+    return j;
 }
 
 } // namespace unilag::tube

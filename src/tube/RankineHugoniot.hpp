@@ -7,6 +7,7 @@
 
 #include <array>
 #include <functional>
+#include <utility>
 #include <vector>
 
 #include "tube/TubeGas.hpp"
@@ -42,5 +43,31 @@ std::array<double, 3> rankineHugoniotDefects(const ShockSide& behind, const Shoc
  *  positionAt(t) advances the solver to t (called with increasing t, t0 among them for odd samples) and returns the
  *  shock's position. */
 double fittedShockSpeed(const std::function<double(double t)>& positionAt, double t0, double halfWidth, int samples);
+
+//! A shock measured on a running solution: where and how fast, both sides, the metric, the relations' defects.
+struct ShockJump
+{
+    double position = 0, speed = 0, entropyJump = 0;
+    ShockSide behind, ahead;
+    std::array<double, 3> metric{0, 0, 0}; //!< the mean of the two sides' (|G|^2, G.g, |g|^2)
+    std::array<double, 3> defects{0, 0, 0};
+};
+
+//! How a shock is measured: the speed fit over t0 +- halfWidth (samples), the sides' windows [near, far] away.
+struct ShockWindows
+{
+    double halfWidth = 0.02;
+    int samples = 9;
+    double near = 0.01, far = 0.03;
+};
+
+using CellMetric = std::vector<std::array<double, 3>>;
+
+/*! Measures the shock at t0 on a solver that advance(t) moves forward (increasing t only), position() locates
+ *  its shock and snapshot() copies its fields and cell metric: fittedShockSpeed, then shockSide on both sides at
+ *  t0, then rankineHugoniotDefects with the mean metric. */
+ShockJump measureShockJump(const std::function<void(double t)>& advance, const std::function<double()>& position,
+                           const std::function<std::pair<GasFields, CellMetric>()>& snapshot, double t0, double gamma,
+                           const ShockWindows& windows = {});
 
 } // namespace unilag::tube
