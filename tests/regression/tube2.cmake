@@ -61,6 +61,16 @@ add_test(NAME tube_gas_free_check_fails COMMAND ${UNILAG_TUBE} ${FREE_SCENE} --c
 set_tests_properties(tube_gas_free_check_fails PROPERTIES LABELS "tube;regression" PASS_REGULAR_EXPRESSION
                      "check failed: energy \\(rod \\+ gas\\)" ENVIRONMENT "OMP_NUM_THREADS=1")
 
+# A run that goes non-finite (an absurd 3000 m/s bending velocity: the state is not finite after the step from
+# t = 0.29 ms) stops with exit 4 and one diagnosis; summary.json says unstable, no dump holds a NaN.
+add_test(NAME tube_gas_free_unstable COMMAND bash -c
+         "rm -rf ${WORK}/tube_gas_free_nan; err=$(${UNILAG_TUBE_SH} ${FREE_SCENE} --set gas.end_time=5.0e-4 \
+          --set gas.rod.perturbation.velocity=[0.0,3000.0,0.0] --output ${WORK}/tube_gas_free_nan 2>&1 >/dev/null); \
+          rc=$?; echo \"exit $rc: $err\"; [ $rc -eq 4 ] && echo \"$err\" | grep -q 'is not finite after the step' && \
+          ${PYTHON} ${SCRIPTS}/tube_modules.py rod_unstable ${WORK}/tube_gas_free_nan")
+set_tests_properties(tube_gas_free_unstable PROPERTIES LABELS "tube;regression" PASS_REGULAR_EXPRESSION
+                     "tube_modules: PASS" ENVIRONMENT "OMP_NUM_THREADS=1")
+
 # ParaView opens the free tube's 3D polyline (200 segments, 201 nodes) with its node field and draws it.
 if(PVPYTHON)
   add_test(NAME paraview_draws_tube_gas_free COMMAND ${PVPYTHON} ${PROJECT_SOURCE_DIR}/tests/io/pv_tube.py

@@ -12,6 +12,7 @@ rod: the files are there; every dump carries density, pressure, velocity, mach, 
 rod_velocity per node, all finite, radius = sqrt(area / pi), mach = |velocity| / a; the last dump's centreline is
 bent (a node off the x axis by more than --bend); mass and momentum kept to 1e-12, the energy's largest deviation
 within the scene's bound; the shock's speed within --speed-tol of the rigid tube's exact one.
+rod_unstable: a run stopped as non-finite: summary.json says "unstable" and every dump written is finite.
 artery: the files are there; periodic within --cycles cycles; the mean outlet pressure within 1% of
 mean(Q) (R1 + R2), what a periodic RCR outlet must give (docs/tube-artery.md); waveforms.csv has every sample.
 Prints "tube_modules: PASS" or the failures."""
@@ -124,6 +125,16 @@ def check_rod(out, a):
     return fails
 
 
+def check_rod_unstable(out, a):
+    s = json.load(open(os.path.join(out, "summary.json")))
+    dumps = sorted(glob.glob(os.path.join(out, "tube_*.h5")))
+    fails = [] if s["status"] == "unstable" else [f"summary.json status {s['status']}, not unstable"]
+    for h5 in dumps:
+        fails += check_rod_dump(h5, s["gamma"])[0]
+    print(f"status {s['status']}; {len(dumps)} dumps written before the stop")
+    return fails
+
+
 def check_artery(out, a):
     fails = files_present(out, ["summary.json", "scene.yaml", "tube.xmf", "waveforms.csv"])
     s = json.load(open(os.path.join(out, "summary.json")))
@@ -145,7 +156,7 @@ def check_artery(out, a):
 
 def main():
     p = argparse.ArgumentParser()
-    p.add_argument("kind", choices=["gas", "wall", "rod", "artery"])
+    p.add_argument("kind", choices=["gas", "wall", "rod", "rod_unstable", "artery"])
     p.add_argument("out")
     p.add_argument("--speed-tol", type=float, default=0.01)
     p.add_argument("--l1", type=float)
@@ -154,7 +165,7 @@ def main():
     p.add_argument("--bend", type=float, default=0.0, help="rod: the least transverse displacement of the end state")
     p.add_argument("--quasi-static", type=float, default=0.01, help="wall: tolerance of R on the quasi-static law")
     a = p.parse_args()
-    fails = {"gas": check_gas, "wall": check_wall, "rod": check_rod, "artery": check_artery}[a.kind](a.out, a)
+    fails = {"gas": check_gas, "wall": check_wall, "rod": check_rod, "rod_unstable": check_rod_unstable, "artery": check_artery}[a.kind](a.out, a)
     for f in fails:
         print("FAIL:", f)
     print("tube_modules: PASS" if not fails else "tube_modules: FAIL")
