@@ -14,6 +14,7 @@
 #include "io/XdmfWriter.hpp"
 #include "solver/Summary.hpp"
 #include "solver/TimeLoop.hpp"
+#include "tube/GasRodRun.hpp"
 #include "tube/GasWallCoupling.hpp"
 #include "tube/RankZero.hpp"
 
@@ -40,33 +41,14 @@ ReferenceProblem referenceProblem(const GasSettings& g)
     return {g.setup.left.state, g.left, 0.0};
 }
 
-//! The exact solution of the reference problem, when the scene has one.
-struct ExactReference
-{
-    bool exists = false, shock = false; //!< shock: the exact solution has a right-running shock
-    double shockLevel = NAN;            //!< pressure halfway up the shock, where it is located in the run
-    double shockSpeed = NAN;            //!< exact speed of that shock
-};
-
-/*! The exact solution's right wave is a shock when p* > p_R; its speed is u_R + a_R sqrt((g+1)/(2g) p* / p_R +
- *  (g-1)/(2g)) (Toro 4.59). The run's shock is found where p falls through (p_R + p*) / 2. */
+/*! The exact solution of the reference problem, when the scene has one. The shock is found where p falls
+ *  through (p_R + p*) / 2. */
 ExactReference exactReference(const GasSettings& g)
 {
-    ExactReference r;
     if (!g.hasReference())
-        return r;
-    r.exists = true;
-    const double gamma = g.setup.gamma;
+        return ExactReference{};
     const ReferenceProblem rp = referenceProblem(g);
-    const RiemannExact exact(rp.left, rp.right, gamma);
-    const double pStar = exact.starPressure(), pR = rp.right.p;
-    r.shock = pStar > pR * (1.0 + 1e-3);
-    if (!r.shock)
-        return r;
-    r.shockLevel = 0.5 * (pR + pStar);
-    const double aR = std::sqrt(gamma * pR / rp.right.rho);
-    r.shockSpeed = rp.right.u + aR * std::sqrt((gamma + 1) / (2 * gamma) * pStar / pR + (gamma - 1) / (2 * gamma));
-    return r;
+    return riemannShock(rp.left, rp.right, g.setup.gamma);
 }
 
 /*! An expandable tube has no exact solution; a Riemann problem with p_L > p_R drives a right-running front, located
@@ -188,23 +170,6 @@ class GasTimeSystem : public TimeSystem
     std::vector<double> coords_;
     double gamma_ = 1.4;
 };
-
-//! Least-squares slope of x(t) over the samples in the second half of the run (the shock has formed and settled).
-double fittedSpeed(const std::vector<double>& t, const std::vector<double>& x, double endTime)
-{
-    double n = 0, st = 0, sx = 0, stt = 0, stx = 0;
-    for (std::size_t i = 0; i < t.size(); ++i)
-        if (t[i] >= 0.5 * endTime)
-        {
-            n += 1;
-            st += t[i];
-            sx += x[i];
-            stt += t[i] * t[i];
-            stx += t[i] * x[i];
-        }
-    const double det = n * stt - st * st;
-    return n >= 2 && det > 0 ? (n * stx - st * sx) / det : NAN;
-}
 
 //! L1(density) = sum |rho - rho_exact| h against the exact solution at time t (waves not yet at the ends).
 double densityL1(const GasSettings& g, const GasFields& f, double t)
@@ -349,7 +314,7 @@ int runOnRankZero(const TubeScene& scene, bool check)
     if (!system.shockPosition.empty())
     {
         f.shockPosition = system.shockPosition.back();
-        f.shockSpeed = fittedSpeed(system.shockTime, system.shockPosition, loop.state.t);
+        f.shockSpeed = secondHalfSpeed(system.shockTime, system.shockPosition, loop.state.t);
     }
     if (g.hasReference())
         f.l1 = densityL1(g, gas.gas().fields(), loop.state.t);
@@ -380,8 +345,47 @@ int runOnRankZero(const TubeScene& scene, bool check)
 
 } // namespace
 
+namespace tube
+{
+
+/*! The exact solution's right wave is a shock when p* > p_R; its speed is u_R + a_R sqrt((g+1)/(2g) p* / p_R +
+ *  (g-1)/(2g)) (Toro 4.59). */
+ExactReference riemannShock(const GasPrimitive& left, const GasPrimitive& right, double gamma)
+{
+    ExactReference r;
+    r.exists = true;
+    const double pStar = RiemannExact(left, right, gamma).starPressure(), pR = right.p;
+    r.shock = pStar > pR * (1.0 + 1e-3);
+    if (!r.shock)
+        return r;
+    r.shockLevel = 0.5 * (pR + pStar);
+    const double aR = std::sqrt(gamma * pR / right.rho);
+    r.shockSpeed = right.u + aR * std::sqrt((gamma + 1) / (2 * gamma) * pStar / pR + (gamma - 1) / (2 * gamma));
+    return r;
+}
+
+double secondHalfSpeed(const std::vector<double>& t, const std::vector<double>& x, double endTime)
+{
+    double n = 0, st = 0, sx = 0, stt = 0, stx = 0;
+    for (std::size_t i = 0; i < t.size(); ++i)
+        if (t[i] >= 0.5 * endTime)
+        {
+            n += 1;
+            st += t[i];
+            sx += x[i];
+            stt += t[i] * t[i];
+            stx += t[i] * x[i];
+        }
+    const double det = n * stt - st * st;
+    return n >= 2 && det > 0 ? (n * stx - st * sx) / det : NAN;
+}
+
+} // namespace tube
+
 int runTubeGas(const TubeScene& scene, bool check, MPI_Comm comm)
 {
+    if (scene.gas.rod.enabled)
+        return runTubeGasRod(scene, check, comm);
     return tube::onRankZero(comm, [&] { return runOnRankZero(scene, check); });
 }
 

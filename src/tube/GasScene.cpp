@@ -5,6 +5,7 @@
 #include <string>
 
 #include "config/Walker.hpp"
+#include "tube/TubeScene.hpp"
 
 namespace unilag::tube
 {
@@ -124,6 +125,105 @@ GasWallSettings readWall(ConfigNode& g, const GasSettings& s)
     return wall;
 }
 
+//! rod.outer_radius with rod.inner_radius or rod.wall_thickness (not both), inner < outer: as the tube scene's.
+void readRodRadii(ConfigNode& r, GasRodSettings& rod)
+{
+    rod.outerRadius = r.positive("outer_radius", 0.0, true);
+    if (r.has("inner_radius") && r.has("wall_thickness"))
+        r.fail("wall_thickness", "give inner_radius or wall_thickness, not both");
+    if (r.has("wall_thickness"))
+    {
+        const double h = r.positive("wall_thickness", 0.0, true);
+        if (h >= rod.outerRadius)
+            r.fail("wall_thickness", "must be less than outer_radius (" + num(rod.outerRadius) + "), found " + num(h));
+        rod.innerRadius = rod.outerRadius - h;
+        return;
+    }
+    rod.innerRadius = r.positive("inner_radius", 0.0, true);
+    if (rod.innerRadius >= rod.outerRadius)
+        r.fail("inner_radius",
+               "must be less than outer_radius (" + num(rod.outerRadius) + "), found " + num(rod.innerRadius));
+}
+
+/*! perturbation.velocity: the transverse velocity's amplitude [0, vy, vz] (the tube lies along x; an axial part
+ *  would only translate or stretch it). */
+void readRodPerturbation(ConfigNode& r, GasRodSettings& rod)
+{
+    ConfigNode p = r.sub("perturbation");
+    if (p.has("velocity"))
+    {
+        const std::vector<double> v = p.vector("velocity", true);
+        for (std::size_t i = 0; i < v.size(); ++i)
+            rod.velocity[i] = v[i];
+        for (const double x : rod.velocity)
+            if (!std::isfinite(x))
+                p.fail("velocity", "must be finite numbers");
+        if (rod.velocity[0] != 0.0)
+            p.fail("velocity", "is transverse: [0, vy, vz] (the tube lies along x), found vx = " + num(rod.velocity[0]));
+    }
+    p.rejectUnknown();
+}
+
+/*! rod: the tube's material with the tube scene's keys (outer_radius, inner_radius or wall_thickness,
+ *  youngs_modulus, density required; poisson_ratio in (-1, 0.5], shear_coefficient in (0, 1]), its ends (free,
+ *  clamped, pinned), outside_pressure (>= 0), perturbation and rod_step_factor in (0, 1]. The gas's ends must stay
+ *  walls (the end caps move with the rod); gravity is not coupled to it (nor an expandable wall: readGas). */
+GasRodSettings readRod(ConfigNode& g, const GasSettings& s)
+{
+    for (const auto& [key, end] : {std::pair{"left", s.setup.left}, std::pair{"right", s.setup.right}})
+        if (end.type != GasEndType::Wall)
+            g.fail(std::string("ends.") + key + ".type",
+                   std::string("a free tube (gas.rod) closes its gas with end caps that move with it: both gas ends "
+                               "must be walls, found ") + gasEndName(end.type));
+    ConfigNode r = g.sub("rod");
+    if (r.has("gravity"))
+        r.fail("gravity", "the gas's weight is not coupled to the rod (GasRodCoupling): a free tube runs without gravity");
+    GasRodSettings rod;
+    rod.enabled = true;
+    readRodRadii(r, rod);
+    rod.youngsModulus = r.positive("youngs_modulus", 0.0, true);
+    rod.density = r.positive("density", 0.0, true);
+    rod.poissonRatio = r.number("poisson_ratio", rod.poissonRatio);
+    if (!(rod.poissonRatio > -1.0 && rod.poissonRatio <= 0.5))
+        r.fail("poisson_ratio", "must be in (-1, 0.5], found " + num(rod.poissonRatio));
+    rod.shearCoefficient = r.number("shear_coefficient", rod.shearCoefficient);
+    if (!(rod.shearCoefficient > 0.0 && rod.shearCoefficient <= 1.0))
+        r.fail("shear_coefficient", "must be in (0, 1], found " + num(rod.shearCoefficient));
+    ConfigNode e = r.sub("ends");
+    const std::vector<std::pair<std::string, EndCondition>> names = {
+        {"free", EndCondition::Free}, {"clamped", EndCondition::Clamped}, {"pinned", EndCondition::Pinned}};
+    rod.left = e.option("left", "free", names);
+    rod.right = e.option("right", "free", names);
+    e.rejectUnknown();
+    rod.outsidePressure = r.nonNegative("outside_pressure", rod.outsidePressure);
+    readRodPerturbation(r, rod);
+    rod.rodStepFactor = r.positive("rod_step_factor", rod.rodStepFactor);
+    if (rod.rodStepFactor > 1.0)
+        r.fail("rod_step_factor", "must be in (0, 1] (of the rod's stable step), found " + num(rod.rodStepFactor));
+    r.rejectUnknown();
+    return rod;
+}
+
+/*! check: l1_density (a rigid tube's Riemann problem or inflow only) and energy (a free tube's bound on the
+ *  coupled integrator's energy error, max |E/E0 - 1|; mass and energy of the other runs are held to 1e-10). */
+void readCheck(ConfigNode& g, GasSettings& s)
+{
+    ConfigNode c = g.sub("check");
+    if (c.has("l1_density") && (s.wall.enabled || s.rod.enabled))
+        c.fail("l1_density", std::string("an ") + (s.wall.enabled ? "expandable tube (gas.wall)" : "free tube (gas.rod)") +
+                                 " has no exact solution to compare with");
+    if (c.has("l1_density") && !s.hasReference())
+        c.fail("l1_density", "only a Riemann problem (initial.left/right) or a uniform gas fed by a fixed_state left "
+                             "end has an exact solution to compare with");
+    if (c.has("l1_density"))
+        s.l1Bound = c.positive("l1_density", 1.0);
+    if (c.has("energy") && !s.rod.enabled)
+        c.fail("energy", "bounds a free tube's (gas.rod) integrator error; the rigid and expandable tubes conserve "
+                         "energy to 1e-10");
+    s.rod.energyBound = c.positive("energy", s.rod.energyBound);
+    c.rejectUnknown();
+}
+
 } // namespace
 
 GasPrimitive GasSettings::initialState(double s) const
@@ -175,17 +275,13 @@ GasSettings readGas(ConfigNode& g)
     readInitial(g, s);
     s.endTime = g.positive("end_time", s.endTime, true);
     s.outputInterval = g.nonNegative("output_interval", s.outputInterval);
+    if (g.has("wall") && g.has("rod"))
+        g.fail("rod", "a free tube (gas.rod) has a rigid radius: give gas.wall or gas.rod, not both");
     if (g.has("wall"))
         s.wall = readWall(g, s);
-    ConfigNode c = g.sub("check");
-    if (c.has("l1_density") && s.wall.enabled)
-        c.fail("l1_density", "an expandable tube (gas.wall) has no exact solution to compare with");
-    if (c.has("l1_density") && !s.hasReference())
-        c.fail("l1_density", "only a Riemann problem (initial.left/right) or a uniform gas fed by a fixed_state left "
-                             "end has an exact solution to compare with");
-    if (c.has("l1_density"))
-        s.l1Bound = c.positive("l1_density", 1.0);
-    c.rejectUnknown();
+    if (g.has("rod"))
+        s.rod = readRod(g, s);
+    readCheck(g, s);
     g.rejectUnknown();
     return s;
 }

@@ -18,6 +18,7 @@
 #include "solver/TimeLoop.hpp"
 #include "tube/GrowthFit.hpp"
 #include "tube/LinearStability.hpp"
+#include "tube/PhysicalRod.hpp"
 #include "tube/TubeDynamics.hpp"
 #include "tube/RankZero.hpp"
 
@@ -30,26 +31,6 @@ using namespace tube;
 constexpr double kPi = 3.14159265358979323846;
 //! --check's bound on the energy change of a run with nothing pumped in (the splitting's error is bounded, O(dt^2)).
 constexpr double kEnergyTolerance = 1e-5;
-
-//! The rod's constants per unit length from the physical tube (tube.md 1.3: A_w, I, J_p = 2I, G = E/(2(1+nu))).
-RodConstants rodConstants(const PhysicalTube& p, const DynamicsSettings& d)
-{
-    const double areaWall = kPi * (p.outerRadius * p.outerRadius - p.innerRadius * p.innerRadius);
-    const double inertia = kPi * (std::pow(p.outerRadius, 4) - std::pow(p.innerRadius, 4)) / 4.0;
-    const double shearModulus = p.youngsModulus / (2.0 * (1.0 + p.poissonRatio));
-    RodConstants c;
-    c.length = p.length;
-    c.extension = p.youngsModulus * areaWall;
-    c.shear = p.shearCoefficient * shearModulus * areaWall;
-    c.bending = p.youngsModulus * inertia;
-    c.torsion = shearModulus * 2.0 * inertia;
-    c.wallMass = p.wallDensity * areaWall;
-    c.wallRotary = p.wallDensity * inertia;
-    c.fluidMass = p.fluidMassPerLength();
-    c.fluidArea = kPi * p.innerRadius * p.innerRadius;
-    c.gravity = d.gravity;
-    return c;
-}
 
 //! The linear model of the same tube, for u_cf and the linear growth rate at the run's speed.
 LinearStability linearModel(const TubeScene& scene)
@@ -316,7 +297,7 @@ int runOnRankZero(const TubeScene& scene, bool check)
     setup.left = scene.left;
     setup.right = scene.right;
     setup.flowSpeed = f.flowSpeed;
-    TubeDynamics rod(rodConstants(scene.physical, d), setup);
+    TubeDynamics rod(rodConstants(scene.physical, d.gravity), setup);
     perturb(rod, scene);
     const std::string dir = scene.outputDirectory;
     std::filesystem::create_directories(dir);
