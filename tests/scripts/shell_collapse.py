@@ -17,7 +17,7 @@ Measured (second order, wedge): 1.4 / 1 / 0.5 mm: 417.1 m/s: +1.85 % at 1 mm, +0
 which meshes each test runs).
 The converged GPR radius need not equal the rigid-perfectly-plastic one exactly: elasticity, compressibility and the
 rate-dependent flow stress of the power law (tau10 = 1e-6 s, n = 20; see the scene) shift it by up to ~1 %.
-Run time (one core): 1.4 mm ~8 s, 1 mm ~17 s, 0.5 mm ~110 s.
+Run time (one core): 1.4 mm ~8 s, 1 mm ~17-45 s (quiet to loaded box), 0.5 mm ~110 s.
 
 usage: shell_collapse.py UNILAG SCENE WORKDIR R_EXACT H_COARSE,H_FINE MAX_ERR
 """
