@@ -20,7 +20,7 @@ namespace unilag
 struct UpdateCheck
 {
     double minVolumeRatio; //!< min |T^{n+1}| / |T^n|
-    double minSound2;      //!< min squared sound speed of the new states (must stay positive)
+    double minSound2;      //!< min squared sound speed of the new states (must stay >= 0; 0: a cold gas)
     double maxGclDefect;   //!< max |m omega - |T^{n+1}|| / |T^{n+1}|
     LO worstCell;          //!< a cell with the smallest volume ratio or internal energy (-1 if none bad)
 };

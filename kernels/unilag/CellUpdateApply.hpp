@@ -89,7 +89,8 @@ UpdateCheck applyUpdate(const MeshView<D>& mesh, const ConstField& state, const 
         stateNew(i, S::omega) = omega;
 
         const double ratio = sNew.volume / volume(i);
-        // Admissible state: a positive squared sound speed (for an ideal gas: a positive internal energy).
+        // Admissible state: a non-negative squared sound speed (for an ideal gas: a non-negative internal energy;
+        // a cold gas, p = 0, has c0 = 0 and the nodal solver's shock impedance, nodalImpedance).
         const double eps = internalEnergy<D, P>(m, E, v, G, J);
         double c2 = gpr::soundSpeed2(m.eos, rhoNew, gpr::pressure(m.eos, rhoNew, eps));
         if (!(c2 == c2) || !(omega == omega))
@@ -98,7 +99,7 @@ UpdateCheck applyUpdate(const MeshView<D>& mesh, const ConstField& state, const 
         ext[1] = Kokkos::Experimental::fmin(ext[1], c2);
         ext[2] = Kokkos::Experimental::fmin(ext[2], -Kokkos::Experimental::fabs(mass(i) * omegaGcl - sNew.volume) /
                                                         sNew.volume);
-        if (ratio <= 0.0 || c2 <= 0.0)
+        if (ratio <= 0.0 || c2 < 0.0)
             ext[3] = Kokkos::Experimental::fmin(ext[3], double(i));
     };
     double ext[4];

@@ -105,11 +105,83 @@ void computeEos(const ConstField& state, const View<const int*>& cellMaterial, c
         const double a = Kokkos::Experimental::sqrt(a2);
         aux(i, Aux::pressure) = p;
         aux(i, Aux::sound) = a;
-        aux(i, Aux::impedance) = rho * a;
+        aux(i, Aux::impedance) = rho * a; // what nodalImpedance refines; rho a is Maire's where it is not called
+        aux(i, Aux::signal) = a;
         aux(i, Aux::eps) = eps;
         aux(i, Aux::theta) = theta;
     };
     Kokkos::parallel_for("unilag::gpr::eos", range(nCells), eos);
+}
+
+/*! \brief Slope Gamma_D of the linear shock Hugoniot U_s = a + Gamma_D u_p in the strong-shock limit (Dukowicz,
+ *  JCP 61, 1985): (gamma + 1) / 2 for an ideal gas, s for Mie-Grueneisen (its own U_s-u_p slope); 1 for the
+ *  barotropic neo-Hookean law, which has no Hugoniot parameter (a choice: the acoustic limit of the others). */
+KOKKOS_INLINE_FUNCTION double shockSlope(const gpr::EosParams& e)
+{
+    if (e.type == gpr::EosParams::IdealGas)
+        return 0.5 * (e.gamma + 1.0);
+    if (e.type == gpr::EosParams::MieGruneisen)
+        return e.s;
+    return 1.0;
+}
+
+/*! \brief The nodal solver's impedance z_i = rho_i (a_eff + Gamma_D |dv|_i) for cells [0, nCells), after
+ *  computeEos, into Aux::impedance and its speed into Aux::signal (the time step's too); docs/cold-gas.md.
+ *   - Dukowicz's shock term Gamma_D |dv| keeps z > 0 where a vanishes (a cold gas, p = 0) and is the impedance of
+ *     a strong shock: |dv|_i = max over the cell's corners of the compression -(v_r - v_i) . c_k / |c_k| (0 if
+ *     none: rarefactions and shear keep rho a), v_r the node velocities of the last nodal solve (vnode: the
+ *     previous step's, or the predictor's for the corrector). Lagged, so z is fixed during the nodal solve, the
+ *     Picard loop and the subcell forces: the forces balance at every node as before.
+ *   - a_eff: the frozen speed a of computeEos less the part of the shear that relaxes within a cell's acoustic time
+ *     h / a: a_eff^2 = a^2 - (4/3) c_sh^2 (1 - phi), phi = tau1 / (tau1 + h / a) (constant tau1 only). tau1 = 1e-14
+ *     gives the fluid's c0 (the hydrodynamic limit), tau1 = inf the elastic sqrt(c0^2 + 4/3 c_sh^2); plastic solids
+ *     keep the frozen speed. Aux::sound stays a (the heat fluxes' Rusanov speed, gpr-model.md 2.3). */
+template <int D, class P = PhysicsHydro>
+void nodalImpedance(const MeshView<D>& mesh, const ConstField& state, const View<const int*>& cellMaterial,
+                    const View<const Material*>& materials, const CellGeometry& geom, const ConstField& vnode,
+                    const Field& aux, LO nCells)
+{
+    using S = StateLayout<D, P>;
+    auto length = geom.length;
+    auto corner = geom.corner;
+    auto impedance = KOKKOS_LAMBDA(const LO i)
+    {
+        const Material& m = materials(cellMaterial(i));
+        const double rho = 1.0 / state(i, S::omega);
+        const double a = aux(i, Aux::sound);
+        double a2 = a * a;
+        if constexpr (P::strain)
+            if (m.strainLaw == StrainConstant && a > 0.0)
+            {
+                // phi = 1 / (1 + h / (a tau1)): tau1 = +inf gives 1, tau1 = 0 gives 0, no inf / inf
+                const double phi = 1.0 / (1.0 + length(i) / (a * m.tau1));
+                a2 = Kokkos::Experimental::fmax(a2 - (4.0 / 3.0) * m.csh * m.csh * (1.0 - phi), 0.0);
+            }
+        // the compression rate of the corners: -(v_r - v_i) . c_k / |c_k|, c_k the outward corner vector
+        double dv = 0.0;
+        for (int k = 0; k < D + 1; ++k)
+        {
+            const LO r = mesh.cellNodes(i, k);
+            double w = 0.0, c2 = 0.0;
+            for (int d = 0; d < D; ++d)
+            {
+                const double c = corner(i, k * D + d);
+                w -= (vnode(r, d) - state(i, S::vel + d)) * c;
+                c2 += c * c;
+            }
+            if (c2 > 0.0)
+                dv = Kokkos::Experimental::fmax(dv, w / Kokkos::Experimental::sqrt(c2));
+        }
+        double s = Kokkos::Experimental::sqrt(a2) + shockSlope(m.eos) * dv;
+        // The shock term carries the round-off velocities ahead of a front into a cold gas, one cell per solve,
+        // decaying to subnormal numbers (1e-320), for which the entries of M lose their digits: a speed below
+        // 1e-100 (in any units no physical speed) is 0, and the node takes the cold gas's velocity (nodalSolve).
+        if (s < 1e-100)
+            s = 0.0;
+        aux(i, Aux::signal) = s;
+        aux(i, Aux::impedance) = rho * s;
+    };
+    Kokkos::parallel_for("unilag::gpr::nodal_impedance", range(nCells), impedance);
 }
 
 //! Subcell matrix M_ik of corner k of a cell (without the impedance factor).
@@ -200,6 +272,9 @@ void nodalSolve(const MeshView<D>& mesh, const BoundaryView& bc, const ConstFiel
         Mat<D> M = Mat<D>::zero();
         Vec<D> b = Vec<D>::zero();
         Vec<D> bext = Vec<D>::zero(); // imposed tractions: sum over boundary faces at r of (s_f / D) t_ext
+        // the same system with z_i = rho_i: used where every z_i at r is 0 (a cold gas at rest), M_r = 0 then
+        Mat<D> Mcold = Mat<D>::zero();
+        Vec<D> bcold = Vec<D>::zero();
         // Slip-wall normals, clustered by direction: faces whose normals differ by less than ~45 degrees (a
         // curved or faceted wall) share one constraint; walls meeting at a corner or an edge give one each,
         // whichever boundary groups they belong to.
@@ -228,6 +303,13 @@ void nodalSolve(const MeshView<D>& mesh, const BoundaryView& bc, const ConstFiel
             }
             if constexpr (P::strain)
                 b = b - stressTimes<D>(sigma, ck);
+            const double rho = 1.0 / state(i, StateLayout<D, P>::omega);
+            for (int a = 0; a < D; ++a)
+            {
+                bcold[a] += rho * Mv[a];
+                for (int e = 0; e < D; ++e)
+                    Mcold.a[a][e] += rho * Mik.a[a][e];
+            }
             for (int j = 0; j < NV; ++j)
             {
                 const int g = (j == k) ? -1 : mesh.cellFaceGroup(i, j);
@@ -273,6 +355,33 @@ void nodalSolve(const MeshView<D>& mesh, const BoundaryView& bc, const ConstFiel
                         slipNormal[best] = slipNormal[best] + n;
                 }
             }
+        }
+        double trace = 0.0;
+        for (int a = 0; a < D; ++a)
+            trace += M.a[a][a];
+        const bool cold = !(trace > 0.0);
+        const Vec<D> bz = b;
+        if (cold)
+        {
+            // No cell at r resists a velocity jump: z_i = 0 around r, which only a cold (p = 0), stress-free
+            // material at rest relative to its nodes gives (nodalImpedance), so b = 0 and the forces vanish
+            // whatever v_r is. Take the velocity the cells impose with equal sound speeds (a mass-weighted mean);
+            // the subcell forces keep z_i = 0, so they still balance (F_r = 0 as before).
+            M = Mcold;
+            b = bcold;
+            trace = 0.0;
+            for (int a = 0; a < D; ++a)
+                trace += M.a[a][a];
+        }
+        // Solve the system scaled to a unit trace: near a cold gas the z_i span hundreds of decades (the shock term
+        // of the round-off velocities ahead of the front), and the determinant of M would underflow to 0.
+        const double unit = trace > 0.0 ? trace : 1.0;
+        for (int a = 0; a < D; ++a)
+        {
+            b[a] /= unit;
+            bext[a] /= unit;
+            for (int e = 0; e < D; ++e)
+                M.a[a][e] /= unit;
         }
         Vec<D> v;
         if (imposed >= 0)
@@ -330,7 +439,7 @@ void nodalSolve(const MeshView<D>& mesh, const BoundaryView& bc, const ConstFiel
                     v = v - dot(v, Q[s]) * Q[s];
             }
         }
-        const Vec<D> F = M * v - b; // sum_i f_ri: the force of the boundary (walls, pistons, tractions) on the fluid
+        const Vec<D> F = cold ? (-1.0) * bz : unit * (M * v - b); // sum_i f_ri: the force of the boundary (walls, pistons, tractions) on the fluid
         for (int d = 0; d < D; ++d)
         {
             vnode(r, d) = v[d];
@@ -358,7 +467,7 @@ double stableTimeStep(const MeshView<D>& mesh, const ConstField& aux, const Cell
             for (int d = 0; d < D; ++d)
                 dvdt += corner(i, k * D + d) * vnode(r, d);
         }
-        const double c = aux(i, Aux::sound);
+        const double c = aux(i, Aux::signal); // the nodal solver's speed (nodalImpedance): a_eff + Gamma_D |dv|
         double step = cfl * length(i) / (c > 0.0 ? c : 1e-300);
         const double rate = Kokkos::Experimental::fabs(dvdt) / volume(i);
         if (rate > 0.0 && maxVolumeChange / rate < step)
@@ -454,7 +563,8 @@ PicardCheck strainUpdate(const MeshView<D>& mesh, const ConstField& state, const
             const gpr::Sym3 sigma = gpr::shearStress(rho, m.csh, G);
             storeSym3(stateNew, i, S::G, G);
             storeSym3(sigmaNew, i, 0, sigma);
-            const double za = aux(i, Aux::impedance) * aux(i, Aux::sound); // rho a^2 at t^n
+            const double an = aux(i, Aux::sound);
+            const double za = an * an / state(i, S::omega); // rho a^2 at t^n (not z a: z carries the shock term)
             const double change =
                 Kokkos::Experimental::sqrt(gpr::norm2(sigma - loadSym3(sigmaOld, i, 0))) / za;
             // admissible: G SPD (det and trace positive), finite stress

@@ -49,10 +49,11 @@ struct Aux
 {
     static constexpr int pressure = 0;  //!< EOS pressure p(rho, eps)
     static constexpr int sound = 1;     //!< signal speed a = sqrt(c0^2 + 4/3 c_sh^2 + c_h^2) (docs/gpr-model.md 1.5)
-    static constexpr int impedance = 2; //!< z = rho a
+    static constexpr int impedance = 2; //!< z = rho s of the nodal solver, s the signal column (nodalImpedance)
     static constexpr int eps = 3;       //!< specific internal energy eps = E - kinetic - elastic - thermal
     static constexpr int theta = 4;     //!< temperature (heat only; 0 otherwise)
-    static constexpr int stress = 5;    //!< shear stress sigma as Sym3, 6 columns (strain only)
+    static constexpr int signal = 5;    //!< s = a_eff + Gamma_D |dv|: the nodal solver's and the time step's speed
+    static constexpr int stress = 6;    //!< shear stress sigma as Sym3, 6 columns (strain only)
     template <class P>
     static constexpr int ncomp()
     {

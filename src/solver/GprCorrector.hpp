@@ -28,6 +28,9 @@ template <int D, class P> void GprOperator<D, P>::midpointState(double t, double
     {
         ScopedTimer timer(md.timers, Phase::Eos);
         computeEos<D, P>(sm, md.cellMaterial, md.materials, md.auxMid, md.m.nCells, md.sigmaMid);
+        // z of the midpoint state against the predictor's node velocities (still in v_node)
+        nodalImpedance<D, P>(md.m, sm, md.cellMaterial, md.materials, md.geomMid, md.read("v_node"), md.auxMid,
+                             md.m.nCells);
     }
     setBoundaryTime(t + 0.5 * dt);
     {

@@ -43,6 +43,9 @@ template <int D, class P> class GprOperator
         if constexpr (P::strain)
             sigma = md_.overwrite("sigma");
         computeEos<D, P>(s, md_.cellMaterial, md_.materials, md_.aux, md_.m.nCells, sigma);
+        // z from the last nodal solve's node velocities (the previous step's): Dukowicz's shock term
+        nodalImpedance<D, P>(md_.m, s, md_.cellMaterial, md_.materials, md_.geom, md_.read("v_node"), md_.aux,
+                             md_.m.nCells);
     }
 
     //! Geometry of local cells [first, nCells) at the current positions.

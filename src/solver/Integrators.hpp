@@ -17,10 +17,10 @@
 namespace unilag
 {
 
-//! Whether a cell update left every cell with a positive volume and a positive squared sound speed.
+//! Whether a cell update left every cell with a positive volume and a non-negative squared sound speed (0: cold).
 inline bool admissible(const UpdateCheck& check)
 {
-    return check.minVolumeRatio > 0.0 && check.minSound2 > 0.0;
+    return check.minVolumeRatio > 0.0 && check.minSound2 >= 0.0;
 }
 
 //! The result of one attempt at a step, for the diagnosis if every attempt fails.
