@@ -7,7 +7,8 @@
  *   cells  state (omega, v, E[, G_e][, J]: StateLayout), mass, material (index, as a double), sigma_prev
  *          (strain: the Picard start's history), sigma_prev2 (strain, order 2), plastic_hint (plastic: each cell's
  *          last plastic-flow parameter), plastic_hint_corrector (plastic, order 2); scratch: state_new, sigma
- *          (the stress iterate), sigma_next, sigma0, state_mid, gradients;
+ *          (the stress iterate), sigma_next, sigma0, state_mid, gradients (midpoint),
+ *          gradients_n (order 2: the state at t^n);
  *   nodes  x (positions); scratch: x_new, v_node, v_node0, x_mid.
  */
 #pragma once
@@ -129,6 +130,7 @@ GprModel<D, P>::GprModel(const Scene& scene_, std::shared_ptr<DistributedMesh> m
         fields.add("state_mid", Entity::Cell, S::ncomp, S_);
         fields.add("x_mid", Entity::Node, D, S_);
         fields.add("gradients", Entity::Cell, ReconLayout<D, P>::ncomp, S_);
+        fields.add("gradients_n", Entity::Cell, ReconLayout<D, P>::ncomp, S_);
         geomMid = CellGeometry(dm.nCells, D);
         auxMid = Field("unilag::auxMid", dm.nCells, Aux::ncomp<P>());
         if constexpr (P::strain)
