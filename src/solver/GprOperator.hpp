@@ -65,13 +65,11 @@ template <int D, class P> class GprOperator
         Kokkos::deep_copy(md_.bcValue, md_.bcValueHost);
     }
 
-    //! Nodal solve at owned nodes with T = -p^n I + sigma (strain), then node velocities to all local nodes.
-    /*! The nodal solve of the state at t^n with the stress iterate; at second order with that state's limited
-     *  reconstruction (reconstructStart), so that the predictor of the midpoint step is second order in space too. */
+    /*! Nodal solve at owned nodes with T = -p^n I + sigma (strain: the stress iterate), then node velocities to all
+     *  local nodes. At second order with the limited reconstruction of the state at t^n (reconstructStart), so that
+     *  the predictor of the midpoint step is second order in space too. */
     void solveNodes()
     {
-        if (md_.order2)
-            reconstructStart();
         {
             ScopedTimer timer(md_.timers, Phase::NodalSolve);
             nodalSolve<D, P>(md_.m, md_.bc, md_.read("state"), md_.aux, md_.geom, md_.write("v_node"), md_.fnode,
@@ -80,10 +78,11 @@ template <int D, class P> class GprOperator
         halo("v_node");
     }
 
-    /*! Order 2: the limited gradients of the state at t^n with the current stress iterate, for the predictor's nodal
-     *  solve and forces. With first-order predictor fluxes the midpoint step is only first order in time: their O(h)
-     *  error enters the midpoint state, and the vortex's velocity error at CFL 0.5 stays at 2.6x its small-dt value
-     *  (docs/gpr-model.md 3.1). Collective. */
+    /*! Order 2: the limited gradients of the state at t^n, for the predictor's nodal solves and forces. With
+     *  first-order predictor fluxes the midpoint step is only first order in time: their O(h) error enters the
+     *  midpoint state, and the vortex's velocity error at CFL 0.5 stays at 2.6x its small-dt value (docs/gpr-model.md
+     *  3.1). Once per step, with the first stress iterate: each Picard iterate adds these gradients to its own cell
+     *  values, so that the Picard loop costs no extra reconstruction. Collective. */
     void reconstructStart()
     {
         {

@@ -45,6 +45,8 @@ template <int D, class P> class GprSystem : public TimeSystem
         op_.setBoundaryTime(t);
         if constexpr (P::strain)
             op_.startPicard(step);
+        if (md_.order2)
+            op_.reconstructStart();
         op_.solveNodes();
         if constexpr (P::heat)
             op_.heatFluxes();
@@ -68,11 +70,7 @@ template <int D, class P> class GprSystem : public TimeSystem
         }
         if constexpr (P::strain)
             if (attempt > 0)
-            {
                 md_.fields.copy("sigma0", "sigma");
-                if (md_.order2)
-                    op_.reconstructStart(); // the gradients v^0 was solved with (the stress is reconstructed too)
-            }
         const bool ok = md_.order2 ? midpoint_.step(t, dt, stage_) : euler_.step(t, dt, stage_);
         iterations = stage_.iterations;
         return ok;
