@@ -1,12 +1,13 @@
 #!/usr/bin/env python3
 """The isentropic vortex's convergence table in the paper's format (docs/gpr-model.md 3.1).
 
-Runs SCENE (inputs/vortex2d.yaml) at each mesh size, order 1 and order 2, reads summary.json's l2_error and prints,
+Runs SCENE (inputs/vortex2d.yaml, or vortex3d.yaml: the paper's 3D table) at each mesh size, order 1 and order 2, reads summary.json's l2_error and prints,
 per order, h on the final mesh, the L2 errors of the specific volume, the velocity and the total energy, and the
 observed orders between consecutive meshes, next to the paper's table; writes WORKDIR/vortex_convergence.csv and
 WORKDIR/vortex_convergence.png (error against h, the paper's points as open markers).
 
 usage: vortex_convergence.py UNILAG SCENE WORKDIR [SIZE,SIZE,...] [--set KEY=VALUE ...]
+  e.g. --set mesh.geometry=geometry/vortex_square2d_structured.geo for the structured 2D mesh.
 """
 import csv
 import json
@@ -15,13 +16,20 @@ import os
 import subprocess
 import sys
 
-# The paper's 2D tables (h, omega, u, E), gpr.md 3.1, for comparison at equal h.
+# The paper's tables (h, omega, u, E), gpr.md 3.1, for comparison at equal h: 2D, and 3D (the vortex extruded).
 PAPER_2D = {
     1: [(3.26e-1, 5.405e-2, 1.547e-1, 2.579e-1), (2.47e-1, 4.164e-2, 1.219e-1, 2.044e-1),
         (1.63e-1, 3.053e-2, 8.866e-2, 1.471e-1), (1.28e-1, 2.286e-2, 7.041e-2, 1.164e-1)],
     2: [(3.26e-1, 4.996e-2, 4.895e-2, 9.281e-2), (2.47e-1, 3.312e-2, 3.020e-2, 5.509e-2),
         (1.63e-1, 1.913e-2, 1.534e-2, 2.858e-2), (1.28e-1, 1.327e-2, 9.153e-3, 1.770e-2)],
 }
+PAPER_3D = {
+    1: [(5.29e-1, 2.389e-1, 5.600e-1, 8.781e-1), (3.62e-1, 2.013e-1, 4.075e-1, 6.660e-1),
+        (2.31e-1, 1.752e-1, 2.882e-1, 4.877e-1), (1.81e-1, 1.454e-1, 2.301e-1, 3.974e-1)],
+    2: [(5.29e-1, 2.899e-1, 2.946e-1, 5.185e-1), (3.62e-1, 1.426e-1, 1.188e-1, 2.275e-1),
+        (2.31e-1, 8.304e-2, 5.829e-2, 1.099e-1), (1.81e-1, 5.931e-2, 3.600e-2, 7.206e-2)],
+}
+PAPER = {2: PAPER_2D, 3: PAPER_3D}
 FIELDS = ("specific_volume", "velocity", "energy")
 
 
@@ -33,7 +41,8 @@ def run(unilag, scene, work, order, size, extra):
     with open(os.path.join(out, "summary.json")) as f:
         summary = json.load(f)
     l2 = summary["l2_error"]
-    return {"order": order, "size": float(size), "cells": summary.get("cells", 0), "h": l2["h_final"],
+    return {"order": order, "size": float(size), "dimension": summary["dimension"], "cells": summary.get("cells", 0),
+            "h": l2["h_final"],
             "wall_seconds": summary["wall_seconds"], **{k: l2[k] for k in FIELDS}}
 
 
@@ -51,7 +60,8 @@ def print_table(order, rows):
         for k in FIELDS:
             line += f" {r[k]:10.3e} {observed(rows, k, i):5.2f}"
         print(line + f" {r['cells']:7d} {r['wall_seconds']:7.2f}")
-    print("  paper:  " + "   ".join(f"h {h:.2e}: {w:.3e} {u:.3e} {e:.3e}" for h, w, u, e in PAPER_2D[order]))
+    paper = PAPER[rows[0]["dimension"]][order]
+    print("  paper:  " + "   ".join(f"h {h:.2e}: {w:.3e} {u:.3e} {e:.3e}" for h, w, u, e in paper))
 
 
 def plot(rows, path):
@@ -65,7 +75,7 @@ def plot(rows, path):
         for order, marker in ((1, "o"), (2, "s")):
             mine = [r for r in rows if r["order"] == order]
             ax.loglog([r["h"] for r in mine], [r[k] for r in mine], marker + "-", label=f"unilag order {order}")
-            paper = PAPER_2D[order]
+            paper = PAPER[rows[0]["dimension"]][order]
             ax.loglog([p[0] for p in paper], [p[col] for p in paper], marker, mfc="none", color="grey",
                       label=f"paper order {order}")
         ax.set_xlabel("h on the final mesh")
