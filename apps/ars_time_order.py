@@ -4,7 +4,8 @@ ars222 on SCENE (inputs/vortex2d.yaml) at each CFL number and at a reference CFL
 reference run. The difference is the volume-weighted L2 norm of the final cell velocities (matched by global id; the
 cells are Lagrangian, so the same cells at slightly different places), and the observed order is
 log(d_k / d_{k+1}) / log(cfl_k / cfl_{k+1}). summary.json's l2_error.velocity (against the exact vortex) and the wall
-time are listed too. Writes WORKDIR/ars_time_order.csv and WORKDIR/ars_time_order.png (difference against CFL).
+time are listed too. time.max_growth = 20 makes every step proportional to the CFL number (after the first, 0.1 of
+it): the default ramp grows dt by 10% per step, i.e. dt ~ dt_0 + 0.1 t whatever the CFL number, which hides the order. Writes WORKDIR/ars_time_order.csv and WORKDIR/ars_time_order.png (difference against CFL).
 
 usage: ars_time_order.py UNILAG SCENE WORKDIR [--cfl 0.8,0.4,0.2,0.1] [--ref 0.025] [--integrators midpoint,ars222]
                          [--set KEY=VALUE ...]
@@ -24,7 +25,8 @@ import numpy as np
 
 def run(unilag, scene, out, integrator, cfl, extra):
     cmd = [unilag, "run", scene, "--quiet", "--output", out, "--set", "scheme.order=2", "--set",
-           f"scheme.integrator={integrator}", "--set", f"time.cfl={cfl}", "--set", "output.interval=0"] + extra
+           f"scheme.integrator={integrator}", "--set", f"time.cfl={cfl}", "--set", "output.interval=0", "--set",
+           "time.max_growth=20"] + extra
     subprocess.run(cmd, check=True)
     with open(os.path.join(out, "summary.json")) as f:
         return json.load(f)

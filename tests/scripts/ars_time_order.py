@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
 """Time order of scheme.integrator ars222 at a fixed mesh: SCENE at CFL_A, CFL_B = CFL_A / 2 and a reference CFL_REF;
 the volume-weighted L2 differences of the final cell velocities (matched by global id) against the reference,
-d_A and d_B, must fall at order log(d_A / d_B) / log(CFL_A / CFL_B) >= MIN_ORDER.
+d_A and d_B, must fall at order log(d_A / d_B) / log(CFL_A / CFL_B) >= MIN_ORDER. time.max_growth = 20 keeps every step
+proportional to the CFL number (the default 10% ramp per step is not).
 
 usage: ars_time_order.py UNILAG SCENE WORKDIR CFL_A CFL_B CFL_REF MIN_ORDER [--set KEY=VALUE ...]
 """
@@ -18,7 +19,8 @@ import numpy as np
 def run(unilag, scene, work, cfl, extra):
     out = os.path.join(work, f"ars_cfl{cfl}")
     subprocess.run([unilag, "run", scene, "--quiet", "--output", out, "--set", "scheme.order=2", "--set",
-                    "scheme.integrator=ars222", "--set", f"time.cfl={cfl}", "--set", "output.interval=0", *extra],
+                    "scheme.integrator=ars222", "--set", f"time.cfl={cfl}", "--set", "output.interval=0",
+                    "--set", "time.max_growth=20", *extra],
                    check=True)
     with h5py.File(sorted(glob.glob(f"{out}/unilag_*.h5"))[-1], "r") as f:
         gid, vel = f["global_id"][:, 0], f["velocity"][...]
