@@ -108,6 +108,9 @@ def main():
         c = np.array(cfls)
         d0 = rows[0]["l2_difference_velocity"]
         ax.loglog(c, d0 * (c / c[0]) ** 2, "k--", lw=0.8, label="slope 2")
+        ax.set_xticks(cfls)
+        ax.set_xticks([], minor=True)
+        ax.set_xticklabels([f"{c:g}" for c in cfls])
         ax.set_xlabel("CFL")
         ax.set_ylabel(f"L2 |u - u(cfl {ref})|")
         ax.legend()
