@@ -508,16 +508,18 @@ struct PicardCheck
  *  plasticHint (plastic variant, one per cell, NaN = none) carries each cell's plastic-flow parameter between calls.
  *  Second order (midpoint corrector): fluxState and fluxGeom, if given, are the midpoint state and configuration,
  *  so that dT = -dt (G^{n+1/2} L^{n+1/2} + L^T G^{n+1/2}) with L from the midpoint corner vectors; the relaxation
- *  still starts from G^n and spans dt. */
+ *  still starts from G^n and spans dt. increment, if given, receives dT (0 where G is not updated): ARS(2,2,2)
+ *  takes its stage's stiff source from the residual G - G^n - dT (Ars.hpp). */
 template <int D, class P>
 PicardCheck strainUpdate(const MeshView<D>& mesh, const ConstField& state, const ConstField& aux,
                          const CellGeometry& geom, const View<const double*>& mass, const View<const int*>& cellMaterial,
                          const View<const Material*>& materials, const ConstField& xNew, const ConstField& vnode,
                          double dt, const ConstField& sigmaOld, const Field& sigmaNew, const Field& stateNew,
                          const View<double*>& plasticHint = View<double*>(), const ConstField& fluxState = ConstField(),
-                         const CellGeometry& fluxGeom = CellGeometry())
+                         const CellGeometry& fluxGeom = CellGeometry(), const Field& increment = Field())
 {
     static_assert(P::strain, "strainUpdate is for the strain variants");
+    const bool keep = increment.extent(0) > 0;
     using S = StateLayout<D, P>;
     constexpr int NV = D + 1;
     const bool midpoint = fluxState.extent(0) > 0;
@@ -539,6 +541,8 @@ PicardCheck strainUpdate(const MeshView<D>& mesh, const ConstField& state, const
         {
             storeSym3(stateNew, i, S::G, G0);
             storeSym3(sigmaNew, i, 0, gpr::Sym3{0, 0, 0, 0, 0, 0});
+            if (keep)
+                storeSym3(increment, i, 0, gpr::Sym3{0, 0, 0, 0, 0, 0});
         }
         else
         {
@@ -553,6 +557,8 @@ PicardCheck strainUpdate(const MeshView<D>& mesh, const ConstField& state, const
                         L.a[a][b] += vnode(r, a) * corner(i, k * D + b) * inv;
             }
             const gpr::Sym3 dT = (-dt) * gpr::transportRate(midpoint ? loadSym3(transported, i, S::G) : G0, L);
+            if (keep)
+                storeSym3(increment, i, 0, dT);
             gpr::Sym3 G;
             if constexpr (P::plastic)
                 G = m.strainLaw == StrainPlastic

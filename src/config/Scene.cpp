@@ -318,6 +318,10 @@ void readScheme(ConfigNode& root, Scene& s)
                                     {{"barth_jespersen", Limiter::BarthJespersen},
                                      {"vertex_based", Limiter::VertexBased},
                                      {"none", Limiter::None}});
+    s.integrator = sch.option<Integrator>("integrator", "midpoint",
+                                          {{"midpoint", Integrator::Midpoint}, {"ars222", Integrator::Ars222}});
+    if (s.integrator == Integrator::Ars222 && s.order != 2)
+        sch.fail("integrator", "ars222 is a second-order integrator: it needs scheme.order: 2");
     sch.rejectUnknown();
 }
 

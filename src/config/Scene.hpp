@@ -24,6 +24,14 @@ namespace unilag
 
 using config::Expr;
 
+/*! Order 2's time integrator (scheme.integrator; docs/gpr-model.md 2.6): the midpoint predictor-corrector, or the
+ *  paper's IMEX ARS(2,2,2) (reference gpr.md 2.6). Order 1 is forward/backward Euler. */
+enum class Integrator
+{
+    Midpoint,
+    Ars222
+};
+
 enum class EosKind
 {
     IdealGas,
@@ -140,6 +148,7 @@ struct Scene
     int picardMaxIterations = 50;   //!< cap: the step is cut and retried when it is reached
     int order = 1;                  //!< 1: first order; 2: limited linear reconstruction + midpoint predictor-corrector
     Limiter limiter = Limiter::BarthJespersen; //!< order 2 only
+    Integrator integrator = Integrator::Midpoint; //!< order 2 only (ars222 is rejected at order 1)
 
     std::string outputDirectory = "output";
     std::string outputSource = "output folder"; //!< where outputDirectory came from, for messages ("--output", a key)

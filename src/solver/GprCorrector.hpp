@@ -8,11 +8,18 @@
 namespace unilag
 {
 
-/*! The predictor has left Q^{n+1/2} in state_new (owned cells), x^{n+1/2} in x_new (all local nodes) and the geometry
- *  of the owned cells in geomNew. These become the midpoint state: its ghosts are completed, its gradients
- *  reconstructed (limited, exchanged), and the nodes solved with the reconstructed values at t^n + dt/2 (boundary
- *  pressures at that time). Heat variants: the midpoint Rusanov fluxes. Collective. */
+//! The predictor's result Q^{n+1/2} becomes the midpoint state (stageState at t^n + dt/2). Collective.
 template <int D, class P> void GprOperator<D, P>::midpointState(double t, double dt)
+{
+    stageState(t + 0.5 * dt);
+}
+
+/*! A first-order stage has left its state in state_new (owned cells), its positions in x_new (all local nodes) and
+ *  the geometry of the owned cells in geomNew. These become the stage state (state_mid, x_mid, geomMid: the midpoint
+ *  of a midpoint step, Q^1 of ARS(2,2,2)): its ghosts are completed, EOS and stress computed, its gradients
+ *  reconstructed (limited, exchanged), and the nodes solved with its own stress and reconstructed values at time
+ *  tStage (boundary pressures at that time). Heat variants: its Rusanov fluxes. Collective. */
+template <int D, class P> void GprOperator<D, P>::stageState(double tStage)
 {
     auto& md = md_;
     md.fields.swap("state_mid", "state_new");
@@ -32,7 +39,7 @@ template <int D, class P> void GprOperator<D, P>::midpointState(double t, double
         nodalImpedance<D, P>(md.m, sm, md.cellMaterial, md.materials, md.geomMid, md.read("v_node"), md.auxMid,
                              md.m.nCells);
     }
-    setBoundaryTime(t + 0.5 * dt);
+    setBoundaryTime(tStage);
     {
         ScopedTimer timer(md.timers, Phase::Reconstruction);
         limitedGradients<D, P>(md.m, sm, md.auxMid, md.sigmaMid, md.geomMid, xm, md.write("gradients"), md.bc,

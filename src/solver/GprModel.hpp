@@ -8,8 +8,9 @@
  *          (strain: the Picard start's history), sigma_prev2 (strain, order 2), plastic_hint (plastic: each cell's
  *          last plastic-flow parameter), plastic_hint_corrector (plastic, order 2); scratch: state_new, sigma
  *          (the stress iterate), sigma_next, sigma0, state_mid, gradients (midpoint),
- *          gradients_n (order 2: the state at t^n);
- *   nodes  x (positions); scratch: x_new, v_node, v_node0, x_mid.
+ *          gradients_n (order 2: the state at t^n); ars222 (GprArs.hpp), created on first use: ars_rates0,
+ *          ars_rates1 (stored stage rates), ars_strain_increment (stage 1's G_e transport increment);
+ *   nodes  x (positions); scratch: x_new, v_node, v_node0, x_mid; ars222: ars_v0, ars_v1 (stage velocities).
  */
 #pragma once
 

@@ -20,6 +20,7 @@
 
 #include "solver/GprBalance.hpp"
 #include "solver/GprModel.hpp"
+#include "unilag/Ars.hpp"
 #include "unilag/Heat.hpp"
 #include "unilag/NodeBalance.hpp"
 
@@ -175,12 +176,18 @@ template <int D, class P> class GprOperator
     std::string inadmissible(LO badCell, const std::string& where, double dt);
 
     // Stored stages, for integrators that combine several (GprStages.hpp).
-    void storeStageRates(const std::string& name);
+    void storeStageRates(const std::string& name, bool stage = false);
     UpdateCheck updateFromStages(double dt, const std::vector<std::pair<std::string, double>>& stages);
 
     // Second order: the corrector's pieces (GprCorrector.hpp).
     void midpointState(double t, double dt);
+    void stageState(double tStage);
     bool correctorUpdate(double dt, UpdateCheck& check, std::string& failure);
+
+    // IMEX ARS(2,2,2) (GprArs.hpp).
+    void keepStrainIncrement(bool keep);
+    void storeStageVelocity(const std::string& name);
+    bool arsFinal(double dt, UpdateCheck& check, std::string& failure);
 
   private:
     //! The stress iterate sigma (strain variants; none for the hydrodynamic variants).
@@ -196,6 +203,7 @@ template <int D, class P> class GprOperator
     GprModel<D, P>& md_;
     Reconstruction<D> recStart_; //!< order 2: the limited gradients of the state at t^n (predictor)
     Reconstruction<D> rec_;      //!< order 2: the midpoint state's limited gradients
+    bool keepIncrement_ = false; //!< ARS(2,2,2) stage 1: strainStep keeps dT in the field ars_strain_increment
     View<LO*> balanceNodes_; //!< owned nodes whose balance is evaluated (selectBalanceNodes)
     Field balanceScratch_;   //!< per node: NodeBalanceLayout
     BalanceRates<D> balance_;
@@ -204,6 +212,7 @@ template <int D, class P> class GprOperator
 
 } // namespace unilag
 
+#include "solver/GprArs.hpp"
 #include "solver/GprCorrector.hpp"
 #include "solver/GprNodeBalance.hpp"
 #include "solver/GprPicard.hpp"

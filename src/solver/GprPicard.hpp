@@ -74,7 +74,8 @@ template <int D, class P> std::string GprOperator<D, P>::inadmissible(LO badCell
 }
 
 /*! One Picard iteration's G_e update (strainUpdate) from the node velocities of the last nodal solve: moves the nodes
- *  to x_new, writes G^{l+1} into state_new and sigma^{l+1} into sigma_next. */
+ *  to x_new, writes G^{l+1} into state_new and sigma^{l+1} into sigma_next (and, for ARS(2,2,2)'s stage 1, the
+ *  transport increment into ars_strain_increment: the last iteration's is the converged one's). */
 template <int D, class P> PicardCheck GprOperator<D, P>::strainStep(double dt, bool midpoint)
 {
     ScopedTimer timer(md_.timers, Phase::StrainUpdate);
@@ -87,7 +88,8 @@ template <int D, class P> PicardCheck GprOperator<D, P>::strainStep(double dt, b
                                   md_.write("state_new"), md_.plasticHint(true), md_.read("state_mid"), md_.geomMid);
     return strainUpdate<D, P>(md_.m, md_.read("state"), md_.aux, md_.geom, md_.mass(), md_.cellMaterial, md_.materials,
                               xn, v, dt, md_.read("sigma"), md_.write("sigma_next"), md_.write("state_new"),
-                              md_.plasticHint(false));
+                              md_.plasticHint(false), ConstField(), CellGeometry(),
+                              keepIncrement_ ? md_.write("ars_strain_increment") : Field());
 }
 
 /*! Picard loop of 2.4 for a step dt: v_node holds the nodal solution for sigma = sigma^0. Each iteration moves the

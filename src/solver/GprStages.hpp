@@ -13,20 +13,27 @@ namespace unilag
 {
 
 /*! Stores the rates of the current stage for the owned cells in the scratch field name (RateLayout; created on first
- *  use): the subcell forces of the state at t^n with the stress of the last nodal solve (strain) and its node
- *  velocities, and the heat fluxes computed for it. */
-template <int D, class P> void GprOperator<D, P>::storeStageRates(const std::string& name)
+ *  use): the subcell forces of the state at t^n (or, stage = true, of the stage state left by stageState: state_mid,
+ *  its EOS, stress, corner vectors and reconstruction) with the stress and reconstruction of the last nodal solve and
+ *  its node velocities, and the heat fluxes computed for that state. The reconstruction must be the nodal solve's
+ *  (recStart_ at order 2, not none), or the stored forces no longer balance at the nodes. */
+template <int D, class P> void GprOperator<D, P>::storeStageRates(const std::string& name, bool stage)
 {
     if (!md_.fields.has(name))
         md_.fields.add(name, Entity::Cell, RateLayout<D, P>::ncomp, Lifetime::Scratch);
     ConstField sigma;
     if constexpr (P::strain)
-        sigma = md_.read("sigma");
-    const SubcellForces<D, P> forces{md_.m,           md_.read("state"),   md_.aux,           sigma,
-                                     md_.geom.corner, Reconstruction<D>(), md_.read("v_node")};
+        sigma = stage ? ConstField(md_.sigmaMid) : md_.read("sigma");
+    const SubcellForces<D, P> forces{md_.m,
+                                     stage ? md_.read("state_mid") : md_.read("state"),
+                                     stage ? md_.auxMid : md_.aux,
+                                     sigma,
+                                     stage ? md_.geomMid.corner : md_.geom.corner,
+                                     stage ? rec_ : recStart_,
+                                     md_.read("v_node")};
     {
         ScopedTimer timer(md_.timers, Phase::CellUpdate);
-        storeRates<D, P>(forces, md_.heatRate, md_.write(name));
+        storeRates<D, P>(forces, stage ? md_.heatRateMid : md_.heatRate, md_.write(name));
     }
     stageBalance_[name] = balanceOf(forces); // the forces' views are overwritten by the next stage
 }

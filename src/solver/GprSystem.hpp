@@ -24,7 +24,8 @@ template <int D, class P> class GprSystem : public TimeSystem
     /*! checkEveryNode: evaluate the force balance at every owned node (--check asserts it), not only at the
      *  boundary nodes whose impulse and work the conservation needs. */
     explicit GprSystem(GprModel<D, P>& model, bool checkEveryNode = false)
-        : md_(model), op_(model), euler_(op_), midpoint_(op_)
+        : md_(model), op_(model), euler_(op_), midpoint_(op_), ars_(op_),
+          ars222_(md_.order2 && md_.scene.integrator == Integrator::Ars222)
     {
         op_.selectBalanceNodes(checkEveryNode);
     }
@@ -71,7 +72,9 @@ template <int D, class P> class GprSystem : public TimeSystem
         if constexpr (P::strain)
             if (attempt > 0)
                 md_.fields.copy("sigma0", "sigma");
-        const bool ok = md_.order2 ? midpoint_.step(t, dt, stage_) : euler_.step(t, dt, stage_);
+        const bool ok = ars222_         ? ars_.step(t, dt, stage_)
+                        : md_.order2 ? midpoint_.step(t, dt, stage_)
+                                     : euler_.step(t, dt, stage_);
         iterations = stage_.iterations;
         return ok;
     }
@@ -125,6 +128,8 @@ template <int D, class P> class GprSystem : public TimeSystem
     GprOperator<D, P> op_;
     ForwardEuler<D, P> euler_;
     Midpoint<D, P> midpoint_;
+    Ars222<D, P> ars_;
+    bool ars222_; //!< scheme.integrator: ars222 (order 2)
     std::unique_ptr<io::XdmfWriter> writer_;
     StageResult stage_;
     long picardTotal_ = 0;

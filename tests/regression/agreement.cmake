@@ -7,7 +7,8 @@
 
 # The variant matrix: hydro, elastic, heat (no shear), plastic, plastic + heat (and viscous + heat in 3D), in 2D
 # (tests/scenes/variants2d.yaml, 1018 triangles, 57-79 steps) and 3D (variants3d.yaml, 1265 tetrahedra, 33-39 steps),
-# at order 1 and 2, on 1 and 3 ranks, each with --check (conservation and GCL to round-off). A blast in the middle of
+# at order 1, 2 and 2 with scheme.integrator ars222 (o<ars>: its stored stages, combined node velocity and final
+# G_e solve), on 1 and 3 ranks, each with --check (conservation and GCL to round-off). A blast in the middle of
 # the domain, so that the shock, the yielded cells and the heat flux reach all three ranks (variant_physics asserts
 # it). The scenes are the hydro variant; the others add their keys here.
 set(VARIANT_hydro "")
@@ -26,15 +27,21 @@ set(VARIANT_viscous_heat ${VARIANT_STRAIN} --set materials.gas.strain_relaxation
 set(VARIANTS hydro elastic heat plastic plastic_heat)
 set(VARIANTS_2 ${VARIANTS})
 set(VARIANTS_3 ${VARIANTS} viscous_heat)
-# One run of the matrix: NAME = variant<dim>d_<variant>_o<order>_np<ranks>[_t<threads>], output in ${WORK}/NAME,
+# One run of the matrix: NAME = variant<dim>d_<variant>_o<order>_np<ranks>[_t<threads>] (order 1, 2 or ars), output
+# in ${WORK}/NAME,
 # fixtures variant<dim>d_<variant> (what its _agree test compares) and variants (all of them).
 function(variant_run dim variant order np nt)
   set(name variant${dim}d_${variant}_o${order}_np${np})
   if(NOT nt EQUAL 1)
     string(APPEND name _t${nt})
   endif()
+  if(order STREQUAL "ars")
+    set(scheme --set scheme.order=2 --set scheme.integrator=ars222)
+  else()
+    set(scheme --set scheme.order=${order})
+  endif()
   add_test(NAME ${name} COMMAND ${MPI_RUN} ${np} ${UNILAG} run ${SCENES}/variants${dim}d.yaml --quiet --check
-           ${VARIANT_${variant}} --set scheme.order=${order} --output ${WORK}/${name})
+           ${VARIANT_${variant}} ${scheme} --output ${WORK}/${name})
   set_tests_properties(${name} PROPERTIES ENVIRONMENT "OMP_NUM_THREADS=${nt}" PROCESSORS ${np}
                        FIXTURES_SETUP "variant${dim}d_${variant};variants" LABELS "gpr;mpi;regression")
 endfunction()
@@ -43,7 +50,7 @@ endfunction()
 foreach(dim 2 3)
   foreach(variant IN LISTS VARIANTS_${dim})
     set(groups "")
-    foreach(order 1 2)
+    foreach(order 1 2 ars)
       set(run ${WORK}/variant${dim}d_${variant}_o${order})
       variant_run(${dim} ${variant} ${order} 1 1)
       variant_run(${dim} ${variant} ${order} 3 1)

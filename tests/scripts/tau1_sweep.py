@@ -25,7 +25,8 @@ limits of docs/gpr-model.md 1.4:
       transport gives a ratio ~ 1/(k dt) ~ 0 here: the viscous stress is lost when dt >> tau1.)
   tau1 = 1 (k = 6, rate ~ 0.3): in between; conservation only.
 
-usage: tau1_sweep.py UNILAG SCENE WORKDIR
+usage: tau1_sweep.py UNILAG SCENE WORKDIR [--set KEY=VALUE ...]
+The extra --set options go to every run (e.g. scheme.order=2 scheme.integrator=ars222).
 """
 import glob
 import os
@@ -58,10 +59,13 @@ def load_G(f):
     return G
 
 
+COMMON = []  # --set options of every run (command line)
+
+
 def run(unilag, scene, work, tau, extra=()):
     out = os.path.join(work, f"tau1_{tau}" + ("_" + "_".join(e.split("=")[1] for e in extra[1::2]) if extra else ""))
     subprocess.run([unilag, "run", scene, "--quiet", "--check", "--set", f"materials.gas.strain_relaxation.tau1={tau}",
-                    *extra, "--output", out], check=True)
+                    *COMMON, *extra, "--output", out], check=True)
     with h5py.File(sorted(glob.glob(f"{out}/unilag_*.h5"))[-1], "r") as f:
         G = load_G(f)
         rho = f["density"][:, 0]
@@ -88,6 +92,7 @@ def run(unilag, scene, work, tau, extra=()):
 
 def main():
     unilag, scene, work = sys.argv[1:4]
+    COMMON.extend(sys.argv[4:])
     ok = True
     res = {}
     for tau in TAUS:

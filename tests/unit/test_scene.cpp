@@ -752,4 +752,14 @@ TEST(SceneErrors, SchemeSection)
     const std::string msg =
         sceneError(dir, replaced(scheme, "picard_tolerance: 1e-10", "picard_tolerence: 1e-10"), "scheme.picard_tolerence");
     EXPECT_PRED2(contains, msg, "did you mean 'scheme.picard_tolerance'");
+    // scheme.integrator: midpoint or ars222, and ars222 only at order 2
+    const std::string o2 = replaced(scheme, "picard_max_iterations: 50", "picard_max_iterations: 50, order: 2");
+    EXPECT_PRED2(contains, sceneError(dir, replaced(o2, "order: 2", "order: 2, integrator: rk2"), "scheme.integrator"),
+                 "midpoint, ars222");
+    EXPECT_PRED2(contains, sceneError(dir, replaced(scheme, "picard_max_iterations: 50", "integrator: ars222"),
+                                      "scheme.integrator"),
+                 "needs scheme.order: 2");
+    EXPECT_EQ(unilag::readScene(dir.write("scene.yaml", o2), {"scheme.integrator=ars222"}).integrator,
+              unilag::Integrator::Ars222);
+    EXPECT_EQ(unilag::readScene(dir.write("scene.yaml", o2), {}).integrator, unilag::Integrator::Midpoint);
 }
