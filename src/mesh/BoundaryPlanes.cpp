@@ -46,25 +46,31 @@ double length(const std::array<double, 3>& v)
 std::vector<std::array<double, 3>> flatBoundaryNormals(const DistributedMesh& dm, MPI_Comm comm)
 {
     const int ng = int(dm.boundaryNames.size()), nv = dm.nv;
-    // the group's mean normal: the sum of its area vectors over owned cells (0 for a closed boundary)
-    std::vector<double> sum(3 * std::size_t(ng) + 1, 0.0), bent(std::size_t(ng) + 1, 0.0);
+    // the group's normal: that of its face of lowest (global cell id, local face), whichever rank holds it, so that
+    // it is the same on any partition, bit for bit
+    std::vector<double> key(std::size_t(ng), 1e300);
+    std::vector<std::array<double, 3>> first(std::size_t(ng), {0.0, 0.0, 0.0});
     for (LO i = 0; i < dm.nOwnedCells; ++i)
         for (int j = 0; j < nv; ++j)
             if (const int g = dm.cellFaceGroupHost[std::size_t(nv) * i + j]; g >= 0)
             {
-                const auto a = faceArea(dm, i, j);
-                for (int d = 0; d < 3; ++d)
-                    sum[3 * g + d] += a[d];
+                const double k = double(dm.cellGid[i]) * nv + j;
+                if (k < key[g])
+                {
+                    key[g] = k;
+                    first[g] = faceArea(dm, i, j);
+                }
             }
-    mpi::allSum(comm, sum.data(), int(sum.size()));
+    std::vector<double> sum(3 * std::size_t(ng) + 1, 0.0), bent(std::size_t(ng) + 1, 0.0);
+    for (int g = 0; g < ng; ++g)
+        if (key[g] == mpi::allMin(comm, key[g]) && key[g] < 1e300)
+            for (int d = 0; d < 3; ++d)
+                sum[3 * g + d] = first[g][d] / length(first[g]);
+    mpi::allSum(comm, sum.data(), int(sum.size())); // one rank adds its normal, the others 0
     std::vector<std::array<double, 3>> normal(ng, {0.0, 0.0, 0.0});
     for (int g = 0; g < ng; ++g)
-    {
-        const double len = length({sum[3 * g], sum[3 * g + 1], sum[3 * g + 2]});
-        for (int d = 0; d < 3; ++d)
-            normal[g][d] = len > 0.0 ? sum[3 * g + d] / len : 0.0;
-    }
-    // flat: every face's unit normal is the mean one (to round-off of the mesh's coordinates)
+        normal[g] = {sum[3 * g], sum[3 * g + 1], sum[3 * g + 2]};
+    // flat: every face's unit normal is that one (to the round-off of the mesh's coordinates)
     for (LO i = 0; i < dm.nOwnedCells; ++i)
         for (int j = 0; j < nv; ++j)
             if (const int g = dm.cellFaceGroupHost[std::size_t(nv) * i + j]; g >= 0)

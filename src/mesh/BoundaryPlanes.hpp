@@ -14,7 +14,7 @@ namespace unilag
 {
 
 /*! For each boundary group of dm, the outward unit normal its faces share in the mesh as built (coords0), or zero
- *  where they do not share one (a curved or folded boundary, or one that closes on itself). Collective. */
+ *  where they do not share one (a curved or folded boundary); the same on any partition. Collective. */
 std::vector<std::array<double, 3>> flatBoundaryNormals(const DistributedMesh& dm, MPI_Comm comm);
 
 } // namespace unilag
