@@ -333,7 +333,7 @@ void nodalSolve(const MeshView<D>& mesh, const BoundaryView& bc, const ConstFiel
                 else if (t == BcSlipWall)
                 {
                     // outward area vector of face j is -D c_j
-                    const Vec<D> n = (-double(D)) * cornerVec<D>(corner, i, j);
+                    const Vec<D> n = wallNormal<D>(bc, g, (-double(D)) * cornerVec<D>(corner, i, j));
                     const double len = norm(n);
                     int best = -1;
                     double bestCos = 0.7;

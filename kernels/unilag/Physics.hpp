@@ -111,7 +111,32 @@ struct BoundaryView
     Kokkos::View<const double* [3], MemSpace> value; //!< group -> imposed velocity or traction, or pressure in 0
     View<const int*> thermal;                        //!< group -> ThermalBc (heat variants only)
     View<const double*> temperature;                 //!< group -> isothermal wall temperature
+    //! group -> outward unit normal of a flat slip wall or symmetry plane (the mesh as built), 0 if curved; may be empty
+    Kokkos::View<const double* [3], MemSpace> plane;
 };
+
+/*! The outward normal a slip wall imposes at a face of group g whose current outward area vector is `area`: the
+ *  group's fixed plane normal, scaled to |area|, where it is flat, else `area`. Normals from the moving faces
+ *  let a plane's round-off kinks grow: a node sliding along its tilted faces leaves the plane further, each step
+ *  (docs/gpr-model.md 3.3). */
+template <int D>
+KOKKOS_INLINE_FUNCTION Vec<D> wallNormal(const BoundaryView& bc, int g, const Vec<D>& area)
+{
+    if (g >= int(bc.plane.extent(0)))
+        return area;
+    double n2 = 0.0, a2 = 0.0;
+    for (int d = 0; d < D; ++d)
+    {
+        n2 += bc.plane(g, d) * bc.plane(g, d);
+        a2 += area[d] * area[d];
+    }
+    if (!(n2 > 0.0))
+        return area;
+    Vec<D> n;
+    for (int d = 0; d < D; ++d)
+        n[d] = Kokkos::Experimental::sqrt(a2) * bc.plane(g, d);
+    return n;
+}
 
 //! A Sym3 from six consecutive columns (xx, yy, zz, xy, xz, yz) of a field row.
 template <class F>

@@ -9,6 +9,7 @@
 #include <cmath>
 #include <string>
 
+#include "mesh/BoundaryPlanes.hpp"
 #include "solver/GprModel.hpp"
 
 namespace unilag
@@ -95,11 +96,19 @@ template <int D, class P> std::string setupBoundaries(GprModel<D, P>& md)
     for (const auto& [name, spec] : scene.boundaries)
         if (std::find(dm.boundaryNames.begin(), dm.boundaryNames.end(), name) == dm.boundaryNames.end())
             return scene.file + ": key 'boundaries." + name + "': the mesh has no boundary group '" + name + "'";
+    // flat slip walls and symmetry planes impose their fixed normal (wallNormal, Physics.hpp)
+    Kokkos::View<double* [3], MemSpace> plane("unilag::bcPlane", std::max(ng, 1));
+    auto ph = Kokkos::create_mirror_view(plane);
+    const auto normals = flatBoundaryNormals(dm, md.comm);
+    for (int g = 0; g < ng; ++g)
+        for (int d = 0; d < 3; ++d)
+            ph(g, d) = th(g) == BcSlipWall ? normals[g][d] : 0.0;
     Kokkos::deep_copy(type, th);
     Kokkos::deep_copy(value, vh);
     Kokkos::deep_copy(thermal, thermalH);
     Kokkos::deep_copy(temperature, tempH);
-    md.bc = BoundaryView{type, value, thermal, temperature};
+    Kokkos::deep_copy(plane, ph);
+    md.bc = BoundaryView{type, value, thermal, temperature, plane};
     md.bcValue = value;
     md.bcValueHost = vh;
     return {};
