@@ -126,7 +126,6 @@ PicardCheck arsFinalStrain(const MeshView<D>& mesh, const ConstField& state, con
 {
     static_assert(P::strain, "arsFinalStrain is for the strain variants");
     using S = StateLayout<D, P>;
-    constexpr int NV = D + 1;
     constexpr double beta = arsBeta;
     auto corner = stageGeom.corner;
     auto stageVolume = stageGeom.volume;
@@ -135,10 +134,8 @@ PicardCheck arsFinalStrain(const MeshView<D>& mesh, const ConstField& state, con
     {
         const Material& m = materials(cellMaterial(i));
         const gpr::Sym3 G0 = loadSym3(state, i, S::G);
-        Vec<D> xn[NV];
-        gatherNodes<D>(mesh, xNew, i, xn);
-        const Simplex<D> sNew(xn);
-        const double ratio = sNew.volume / volume(i);
+        const double newVolume = cellVolumeAt<D>(mesh, xNew, i);
+        const double ratio = newVolume / volume(i);
         ext[0] = Kokkos::Experimental::fmin(ext[0], ratio);
         bool bad = !(ratio > 0.0);
         gpr::Sym3 G = G0;
@@ -146,21 +143,13 @@ PicardCheck arsFinalStrain(const MeshView<D>& mesh, const ConstField& state, con
         {
             const gpr::Sym3 dT0 = loadSym3(increment, i, 0);
             const gpr::Sym3 G1 = loadSym3(stage, i, S::G);
-            Mat<3> L = Mat<3>::zero();
-            const double inv = 1.0 / stageVolume(i);
-            for (int k = 0; k < NV; ++k)
-            {
-                const LO r = mesh.cellNodes(i, k);
-                for (int a = 0; a < D; ++a)
-                    for (int b = 0; b < D; ++b)
-                        L.a[a][b] += v1(r, a) * corner(i, k * D + b) * inv;
-            }
+            const Mat<3> L = cellVelocityGradient<D>(mesh, v1, corner, i, 1.0 / stageVolume(i));
             const gpr::Sym3 dT1 = (-dt) * gpr::transportRate(G1, L);
             const gpr::Sym3 residual = G1 - (G0 + dT0); // beta dt I_1
             const gpr::Sym3 B = G0 + ((beta - 1.0) / beta) * dT0 + (2.0 - beta) * dT1 + ((1.0 - beta) / beta) * residual;
             if constexpr (P::plastic)
                 if (m.strainLaw == StrainPlastic)
-                    G = gpr::relaxPlasticStrain(B, mass(i) / sNew.volume, m.csh, beta * dt, m.tau10, m.sigmaY,
+                    G = gpr::relaxPlasticStrain(B, mass(i) / newVolume, m.csh, beta * dt, m.tau10, m.sigmaY,
                                                 m.exponent, &plasticHint(i));
             if (m.strainLaw == StrainConstant)
                 G = gpr::implicitStrainRelax(B, beta * dt * gpr::strainRelaxationRate(B, m.tau1));

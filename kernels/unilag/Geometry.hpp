@@ -153,4 +153,30 @@ double computeGeometry(const MeshView<D>& mesh, const ConstField& x, const CellG
     return minVolume;
 }
 
+//! The volume of cell i on the positions x (a trial configuration: the Picard iterate, a stage's end).
+template <int D> KOKKOS_INLINE_FUNCTION double cellVolumeAt(const MeshView<D>& mesh, const ConstField& x, LO i)
+{
+    Vec<D> xi[D + 1];
+    gatherNodes<D>(mesh, x, i, xi);
+    return Simplex<D>(xi).volume;
+}
+
+/*! The velocity gradient of cell i, L = (1/|T_i|) sum_r v_r (x) c_ri (exact for the linear velocity field of its
+ *  nodes; docs/gpr-model.md 2.4), with the corner vectors of the configuration of volume 1 / inverseVolume, as a
+ *  3x3 matrix (zero rows and columns beyond D). */
+template <int D>
+KOKKOS_INLINE_FUNCTION Mat<3> cellVelocityGradient(const MeshView<D>& mesh, const ConstField& vnode,
+                                                   const Field& corner, LO i, double inverseVolume)
+{
+    Mat<3> L = Mat<3>::zero();
+    for (int k = 0; k < D + 1; ++k)
+    {
+        const LO r = mesh.cellNodes(i, k);
+        for (int a = 0; a < D; ++a)
+            for (int b = 0; b < D; ++b)
+                L.a[a][b] += vnode(r, a) * corner(i, k * D + b) * inverseVolume;
+    }
+    return L;
+}
+
 } // namespace unilag

@@ -521,7 +521,6 @@ PicardCheck strainUpdate(const MeshView<D>& mesh, const ConstField& state, const
     static_assert(P::strain, "strainUpdate is for the strain variants");
     const bool keep = increment.extent(0) > 0;
     using S = StateLayout<D, P>;
-    constexpr int NV = D + 1;
     const bool midpoint = fluxState.extent(0) > 0;
     auto corner = midpoint ? fluxGeom.corner : geom.corner;
     auto volume = geom.volume;
@@ -531,10 +530,8 @@ PicardCheck strainUpdate(const MeshView<D>& mesh, const ConstField& state, const
     {
         const Material& m = materials(cellMaterial(i));
         const gpr::Sym3 G0 = loadSym3(state, i, S::G);
-        Vec<D> xn[NV];
-        gatherNodes<D>(mesh, xNew, i, xn);
-        const Simplex<D> sNew(xn);
-        const double ratio = sNew.volume / volume(i);
+        const double newVolume = cellVolumeAt<D>(mesh, xNew, i);
+        const double ratio = newVolume / volume(i);
         ext[1] = Kokkos::Experimental::fmin(ext[1], ratio);
         bool bad = !(ratio > 0.0);
         if (m.strainLaw == StrainNone || bad)
@@ -546,16 +543,8 @@ PicardCheck strainUpdate(const MeshView<D>& mesh, const ConstField& state, const
         }
         else
         {
-            const double rho = mass(i) / sNew.volume;
-            Mat<3> L = Mat<3>::zero();
-            const double inv = 1.0 / fluxVolume(i);
-            for (int k = 0; k < NV; ++k)
-            {
-                const LO r = mesh.cellNodes(i, k);
-                for (int a = 0; a < D; ++a)
-                    for (int b = 0; b < D; ++b)
-                        L.a[a][b] += vnode(r, a) * corner(i, k * D + b) * inv;
-            }
+            const double rho = mass(i) / newVolume;
+            const Mat<3> L = cellVelocityGradient<D>(mesh, vnode, corner, i, 1.0 / fluxVolume(i));
             const gpr::Sym3 dT = (-dt) * gpr::transportRate(midpoint ? loadSym3(transported, i, S::G) : G0, L);
             if (keep)
                 storeSym3(increment, i, 0, dT);
