@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <array>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -18,6 +17,7 @@
 #include "solver/Summary.hpp"
 #include "solver/TimeLoop.hpp"
 #include "tube/RankZero.hpp"
+#include "tube/SerialLoop.hpp"
 
 namespace unilag
 {
@@ -228,16 +228,13 @@ int runOnRankZero(const TubeScene& scene, bool check)
     writeTubeScene(scene, dir + "/scene.yaml");
     const double sample = a.inlet.period / a.samplesPerCycle;
     ArteryTimeSystem system(artery, sample, dir);
-    TimeControl control;
-    control.endTime = a.cycles * a.inlet.period;
-    control.outputInterval = a.dumpsPerCycle > 0 ? a.inlet.period / a.dumpsPerCycle : 0.0;
-    control.maxRetries = 0;
-    control.initialTimeStep = sample;
-    control.progress = false;
-    const auto start = std::chrono::steady_clock::now();
-    const LoopResult loop = runTimeLoop(system, control, MPI_COMM_SELF);
+    TimeControl quiet;
+    quiet.progress = false;
+    const TimedLoop run = runTubeLoop(system, a.cycles * a.inlet.period,
+                                      a.dumpsPerCycle > 0 ? a.inlet.period / a.dumpsPerCycle : 0.0, sample, quiet);
+    const LoopResult& loop = run.loop;
     ArteryFigures f;
-    f.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    f.wall = run.wall;
     const auto &t0 = loop.initialTotals, &t1 = loop.finalTotals;
     f.volumeDefect = (t1[0] - t0[0] - (t1[1] - t0[1]) + (t1[2] - t0[2])) / t0[0];
     measureCycles(a, system, f);

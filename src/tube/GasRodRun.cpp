@@ -1,7 +1,6 @@
 #include "tube/GasRodRun.hpp"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -17,6 +16,7 @@
 #include "tube/GasRun.hpp"
 #include "tube/PhysicalRod.hpp"
 #include "tube/RankZero.hpp"
+#include "tube/SerialLoop.hpp"
 
 namespace unilag
 {
@@ -283,14 +283,9 @@ int runOnRankZero(const TubeScene& scene, bool check)
     if (g.riemann)
         f.ref = riemannShock(g.left, g.right, g.setup.gamma);
     GasRodTimeSystem system(tube, f.ref, g.setup.gamma, dir);
-    TimeControl control;
-    control.endTime = g.endTime;
-    control.outputInterval = g.outputInterval;
-    control.maxRetries = 0;
-    control.initialTimeStep = tube.stableStep(); // the CFL step is stable from the start: no ramp
-    const auto start = std::chrono::steady_clock::now();
-    const LoopResult loop = runTimeLoop(system, control, MPI_COMM_SELF);
-    f.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const TimedLoop run = runTubeLoop(system, g.endTime, g.outputInterval, tube.stableStep()); // CFL step: stable
+    const LoopResult& loop = run.loop;
+    f.wall = run.wall;
     f.maxEnergyChange = system.maxEnergyChange;
     if (!system.shockTime.empty())
     {

@@ -1,6 +1,5 @@
 #include "tube/GasRun.hpp"
 
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -17,6 +16,7 @@
 #include "tube/GasRodRun.hpp"
 #include "tube/GasWallCoupling.hpp"
 #include "tube/RankZero.hpp"
+#include "tube/SerialLoop.hpp"
 
 namespace unilag
 {
@@ -303,14 +303,9 @@ int runOnRankZero(const TubeScene& scene, bool check)
     f.ref = g.wall.enabled ? wallShockReference(g) : exactReference(g);
     GasTimeSystem system(gas, f.ref, dir);
     system.setGamma(g.setup.gamma);
-    TimeControl control;
-    control.endTime = g.endTime;
-    control.outputInterval = g.outputInterval;
-    control.maxRetries = 0;
-    control.initialTimeStep = gas.stableStep(); // the CFL step is stable from the start: no ramp
-    const auto start = std::chrono::steady_clock::now();
-    const LoopResult loop = runTimeLoop(system, control, MPI_COMM_SELF);
-    f.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const TimedLoop run = runTubeLoop(system, g.endTime, g.outputInterval, gas.stableStep()); // CFL step: stable
+    const LoopResult& loop = run.loop;
+    f.wall = run.wall;
     if (!system.shockPosition.empty())
     {
         f.shockPosition = system.shockPosition.back();

@@ -1,6 +1,5 @@
 #include "tube/TubeTimeRun.hpp"
 
-#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <filesystem>
@@ -21,6 +20,7 @@
 #include "tube/PhysicalRod.hpp"
 #include "tube/TubeDynamics.hpp"
 #include "tube/RankZero.hpp"
+#include "tube/SerialLoop.hpp"
 
 namespace unilag
 {
@@ -304,14 +304,10 @@ int runOnRankZero(const TubeScene& scene, bool check)
     writeTubeScene(scene, dir + "/scene.yaml");
     TubeTimeSystem system(rod, d, dir);
     TimeControl control;
-    control.endTime = d.endTime;
-    control.outputInterval = d.outputInterval;
-    control.maxRetries = 0;
-    control.initialTimeStep = system.loopStep(); // no ramp: the step is fixed (loopStep)
     control.stepsCsv = std::getenv("UNILAG_TUBE_STEPS") ? dir + "/steps.csv" : "";
-    const auto start = std::chrono::steady_clock::now();
-    const LoopResult loop = runTimeLoop(system, control, MPI_COMM_SELF);
-    f.wall = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+    const TimedLoop run = runTubeLoop(system, d.endTime, d.outputInterval, system.loopStep(), control); // fixed step
+    const LoopResult& loop = run.loop;
+    f.wall = run.wall;
     f.rodSteps = loop.state.steps * TubeTimeSystem::substeps();
     f.nodeStepsPerSecond = loop.wallSeconds > 0 ? double(f.rodSteps) * rod.nodes() / loop.wallSeconds : 0.0;
     f.fit = fitTip(system.tip, d.fitFrom * d.endTime, d.fitBelow * scene.physical.length, f.outOfPlane);
