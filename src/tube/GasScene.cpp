@@ -125,26 +125,6 @@ GasWallSettings readWall(ConfigNode& g, const GasSettings& s)
     return wall;
 }
 
-//! rod.outer_radius with rod.inner_radius or rod.wall_thickness (not both), inner < outer: as the tube scene's.
-void readRodRadii(ConfigNode& r, GasRodSettings& rod)
-{
-    rod.outerRadius = r.positive("outer_radius", 0.0, true);
-    if (r.has("inner_radius") && r.has("wall_thickness"))
-        r.fail("wall_thickness", "give inner_radius or wall_thickness, not both");
-    if (r.has("wall_thickness"))
-    {
-        const double h = r.positive("wall_thickness", 0.0, true);
-        if (h >= rod.outerRadius)
-            r.fail("wall_thickness", "must be less than outer_radius (" + num(rod.outerRadius) + "), found " + num(h));
-        rod.innerRadius = rod.outerRadius - h;
-        return;
-    }
-    rod.innerRadius = r.positive("inner_radius", 0.0, true);
-    if (rod.innerRadius >= rod.outerRadius)
-        r.fail("inner_radius",
-               "must be less than outer_radius (" + num(rod.outerRadius) + "), found " + num(rod.innerRadius));
-}
-
 /*! perturbation.velocity: the transverse velocity's amplitude [0, vy, vz] (the tube lies along x; an axial part
  *  would only translate or stretch it). */
 void readRodPerturbation(ConfigNode& r, GasRodSettings& rod)
@@ -180,7 +160,7 @@ GasRodSettings readRod(ConfigNode& g, const GasSettings& s)
         r.fail("gravity", "the gas's weight is not coupled to the rod (GasRodCoupling): a free tube runs without gravity");
     GasRodSettings rod;
     rod.enabled = true;
-    readRodRadii(r, rod);
+    readTubeRadii(r, true, rod.outerRadius, rod.innerRadius);
     rod.youngsModulus = r.positive("youngs_modulus", 0.0, true);
     rod.density = r.positive("density", 0.0, true);
     rod.poissonRatio = r.number("poisson_ratio", rod.poissonRatio);

@@ -24,28 +24,6 @@ double positiveIfGiven(ConfigNode& node, const std::string& key)
     return node.has(key) ? node.positive(key, 0.0, true) : std::nan("");
 }
 
-//! The tube's radii: outer_radius with inner_radius or wall_thickness (not both), inner < outer.
-void readRadii(ConfigNode& t, PhysicalTube& p)
-{
-    p.outerRadius = positiveIfGiven(t, "outer_radius");
-    if (t.has("inner_radius") && t.has("wall_thickness"))
-        t.fail("wall_thickness", "give inner_radius or wall_thickness, not both");
-    if (t.has("wall_thickness"))
-    {
-        const double h = t.positive("wall_thickness", 0.0, true);
-        if (h >= p.outerRadius)
-            t.fail("wall_thickness", "must be less than outer_radius (" + num(p.outerRadius) + "), found " + num(h));
-        p.innerRadius = p.outerRadius - h;
-    }
-    else
-    {
-        p.innerRadius = positiveIfGiven(t, "inner_radius");
-        if (p.innerRadius >= p.outerRadius)
-            t.fail("inner_radius",
-                   "must be less than outer_radius (" + num(p.outerRadius) + "), found " + num(p.innerRadius));
-    }
-}
-
 /*! tube.area_change (K of A = A0 - K |Omega|^2 / 2, m^2, >= 0) and tube.area_change_pressure (what loads it,
  *  docs/tube-model.md 7.3): only the geometric model has an area change. */
 void readAreaChange(ConfigNode& t, TubeScene& s)
@@ -70,7 +48,7 @@ void readTube(ConfigNode& root, TubeScene& s)
                             {{"euler_bernoulli", TubeModel::EulerBernoulli}, {"geometric", TubeModel::Geometric}});
     PhysicalTube& p = s.physical;
     p.length = positiveIfGiven(t, "length");
-    readRadii(t, p);
+    readTubeRadii(t, false, p.outerRadius, p.innerRadius);
     p.youngsModulus = positiveIfGiven(t, "youngs_modulus");
     p.wallDensity = positiveIfGiven(t, "density");
     p.poissonRatio = t.number("poisson_ratio", 0.3);
@@ -203,6 +181,26 @@ void readOutput(ConfigNode& root, TubeScene& s)
 }
 
 } // namespace
+
+void readTubeRadii(ConfigNode& node, bool required, double& outer, double& inner)
+{
+    auto read = [&](const std::string& key)
+    { return required ? node.positive(key, 0.0, true) : positiveIfGiven(node, key); };
+    outer = read("outer_radius");
+    if (node.has("inner_radius") && node.has("wall_thickness"))
+        node.fail("wall_thickness", "give inner_radius or wall_thickness, not both");
+    if (node.has("wall_thickness"))
+    {
+        const double h = node.positive("wall_thickness", 0.0, true);
+        if (h >= outer)
+            node.fail("wall_thickness", "must be less than outer_radius (" + num(outer) + "), found " + num(h));
+        inner = outer - h;
+        return;
+    }
+    inner = read("inner_radius");
+    if (inner >= outer)
+        node.fail("inner_radius", "must be less than outer_radius (" + num(outer) + "), found " + num(inner));
+}
 
 const char* endName(EndCondition e)
 {

@@ -125,6 +125,10 @@ TubeScene readTubeScene(const std::string& file, const std::vector<std::string>&
  *  dispatch it; false if the file cannot be read (the continuum reader then reports why). */
 bool isTubeScene(const std::string& file);
 
+/*! A tube's radii from node: outer_radius with inner_radius or wall_thickness (not both), inner < outer. Missing
+ *  keys are input errors if required, NaN otherwise (the caller then names what is missing). Throws InputError. */
+void readTubeRadii(config::ConfigNode& node, bool required, double& outer, double& inner);
+
 //! Write the resolved scene as YAML.
 void writeTubeScene(const TubeScene& scene, const std::string& file);
 
