@@ -93,6 +93,8 @@ UpdateCheck applyUpdate(const MeshView<D>& mesh, const ConstField& state, const 
         // a cold gas, p = 0, has c0 = 0 and the nodal solver's shock impedance, nodalImpedance).
         const double eps = internalEnergy<D, P>(m, E, v, G, J);
         double c2 = gpr::soundSpeed2(m.eos, rhoNew, gpr::pressure(m.eos, rhoNew, eps));
+        if (c2 < 0.0 && eps >= -m.epsRoundoff)
+            c2 = 0.0; // a cold cell's E - kinetic, zero up to round-off (docs/cold-gas.md)
         if (!(c2 == c2) || !(omega == omega))
             c2 = -Kokkos::reduction_identity<double>::min(); // NaN: report as the worst possible
         ext[0] = Kokkos::Experimental::fmin(ext[0], ratio);

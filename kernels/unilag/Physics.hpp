@@ -79,6 +79,9 @@ struct Material
     double tau10 = 0.0, sigmaY = 0.0, exponent = 0.0; //!< StrainPlastic
     int heat = 0;                //!< 1: conducts heat
     double alpha = 0.0, tau2 = 0.0, theta0 = 1.0;      //!< heat: alpha, relaxation time, reference temperature
+    //! Negative specific internal energies above -epsRoundoff are round-off of a cold gas, not instability: the
+    //! problem's mean specific energy times 1e-14 (set by the initial state; docs/cold-gas.md).
+    double epsRoundoff = 0.0;
 };
 
 //! Material of an ideal fluid with the given EOS (no shear, no heat): the Euler equations.

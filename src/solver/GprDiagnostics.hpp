@@ -52,6 +52,7 @@ std::string diagnose(const GprModel<D, P>& md, const UpdateCheck& check, double 
         const auto& dm = *md.mesh;
         const LO i = check.worstCell;
         auto sn = md.fields["state_new"].getLocalViewHost(Tpetra::Access::ReadOnly);
+        auto state0 = md.fields["state"].getLocalViewHost(Tpetra::Access::ReadOnly);
         auto vol = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), md.geom.volume);
         auto volNew = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), md.geomNew.volume);
         auto mats = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), md.materials);
@@ -77,7 +78,8 @@ std::string diagnose(const GprModel<D, P>& md, const UpdateCheck& check, double 
         os << "cell " << dm.cellGid[i] << " (initial centroid " << c[0] << ", " << c[1] << ", " << c[2]
            << ") at t = " << t << " after " << attempts << " halvings of dt (last dt " << dt << "): volume ratio "
            << volNew(i) / vol(i) << " (volume " << vol(i) << " -> " << volNew(i) << "), density " << rho
-           << ", specific internal energy " << eps << ", squared sound speed " << c2;
+           << ", specific internal energy " << eps << " (total " << sn(i, S::energy) << ", kinetic "
+           << 0.5 * dot(v, v) << ", before the step " << state0(i, S::energy) << "), squared sound speed " << c2;
         local = os.str();
     }
     return mpi::firstMessage(md.comm, local);

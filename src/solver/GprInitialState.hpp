@@ -124,6 +124,33 @@ void depositEnergy(const GprModel<D, P>& md, const SV& sh, const MH& massH)
             sh(i, S::energy) += md.scene.depositEnergy / m[0];
 }
 
+/*! Material::epsRoundoff of every material: 1e-14 times the problem's mean specific total energy (sum m E / sum m
+ *  over the owned cells, all ranks). With pressure 0 a cell's internal energy E - v^2/2 is 0 only up to the round-off
+ *  (and underflow) of that difference; the update must not reject it as unstable. Collective. */
+template <int D, class P, class StateHost, class MassHost>
+void setRoundoffFloor(GprModel<D, P>& md, const StateHost& sh, const MassHost& massH)
+{
+    using S = StateLayout<D, P>;
+    double sums[2] = {0.0, 0.0};
+    for (LO i = 0; i < md.mesh->nOwnedCells; ++i)
+    {
+        sums[0] += massH(i, 0) * sh(i, S::energy);
+        sums[1] += massH(i, 0);
+    }
+    mpi::allSum(md.comm, sums);
+    const double floor = sums[1] > 0.0 ? 1e-14 * std::abs(sums[0]) / sums[1] : 0.0;
+    View<Material*> mats("unilag::materials", md.materials.extent(0));
+    auto mh = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), md.materials);
+    auto out = Kokkos::create_mirror_view(mats);
+    for (std::size_t k = 0; k < mh.extent(0); ++k)
+    {
+        out(k) = mh(k);
+        out(k).epsRoundoff = floor;
+    }
+    Kokkos::deep_copy(mats, out);
+    md.materials = mats;
+}
+
 //! Initial conditions, masses, materials and boundary table. Returns an error message ("" if fine). Collective.
 template <int D, class P> std::string initialize(GprModel<D, P>& md)
 {
@@ -158,6 +185,7 @@ template <int D, class P> std::string initialize(GprModel<D, P>& md)
     for (LO i = 0; i < dm.nCells; ++i)
         cellMaterial(i) = int(matH(i, 0));
     Kokkos::deep_copy(md.cellMaterial, cellMaterial);
+    setRoundoffFloor(md, sh, massH);
     return {};
 }
 
