@@ -35,8 +35,9 @@ template <int D, class P> class GprOperator
     explicit GprOperator(GprModel<D, P>& model) : md_(model) {}
     GprModel<D, P>& model() { return md_; }
 
-    //! EOS, signal speeds, temperature and sigma^n (into the field sigma) for all local cells.
-    void computeAux()
+    /*! EOS, signal speeds, temperature and sigma^n (into the field sigma) for all local cells; the impedance's shock
+     *  term against the node velocities in the field lagged. */
+    void computeAux(const char* lagged = "v_node")
     {
         ScopedTimer timer(md_.timers, Phase::Eos);
         auto s = md_.read("state");
@@ -45,7 +46,7 @@ template <int D, class P> class GprOperator
             sigma = md_.overwrite("sigma");
         computeEos<D, P>(s, md_.cellMaterial, md_.materials, md_.aux, md_.m.nCells, sigma);
         // z from the last nodal solve's node velocities (the previous step's): Dukowicz's shock term
-        nodalImpedance<D, P>(md_.m, s, md_.cellMaterial, md_.materials, md_.geom, md_.read("v_node"), md_.aux,
+        nodalImpedance<D, P>(md_.m, s, md_.cellMaterial, md_.materials, md_.geom, md_.read(lagged), md_.aux,
                              md_.m.nCells);
     }
 
@@ -148,14 +149,14 @@ template <int D, class P> class GprOperator
 
     /*! The new state becomes the state: its ghosts are exchanged, positions and the owned cells' geometry taken
      *  over from the update, the ghosts' geometry and every cell's EOS recomputed. Collective. */
-    void advance()
+    void advance(const char* lagged = "v_node")
     {
         halo("state_new");
         md_.fields.swap("state", "state_new");
         md_.fields.swap("x", "x_new");
         std::swap(md_.geom, md_.geomNew); // owned cells: written by the update; ghosts are computed here
         refreshGeometry(md_.m.nOwnedCells);
-        computeAux();
+        computeAux(lagged);
     }
 
     //! The global extrema of a cell update's checks. Collective.
