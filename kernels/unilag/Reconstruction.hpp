@@ -166,7 +166,7 @@ enum class Limiter
 /*! The quantities a reconstruction fits (the Q of limitedGradientsOf): here velocity, pressure and shear stress
  *  (ReconLayout). Q gives nq, the index bdata of the quantity that boundary faces may impose (here the pressure), the
  *  values of a cell, the groups across which the cell's mirror image joins the stencil and its mirrored values, and
- *  the imposed boundary value of quantity bdata at a group (false if none). Heat.hpp's heat::Quantities is the other. */
+ *  the imposed boundary value of quantity bdata at a group (false if none). The other Q: heat::Quantities. */
 template <int D, class P>
 struct MechanicalQuantities
 {
@@ -256,8 +256,9 @@ void limitedGradientsOf(const MeshView<D>& mesh, const Q& quantities, const Cell
                     }
             }
         }
-        // Bounds over the face neighbours. Across a slip wall or symmetry plane (mirrored group) the cell's mirror
-        // image stands in for the neighbour, and joins the stencil too (with a face neighbour's weight), as in the symmetric flow.
+        // Bounds over the face neighbours. Across a slip wall or symmetry plane (a group Q mirrors) the cell's mirror
+        // image stands in for the neighbour, and joins the stencil too (with a face neighbour's weight), as in the
+        // symmetric flow.
         for (int f = 0; f < NV; ++f)
         {
             const LO j = mesh.cellNeighbour(i, f);
