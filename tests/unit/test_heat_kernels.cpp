@@ -118,7 +118,7 @@ template <int D> struct Heat
     Kokkos::View<double**, Kokkos::LayoutLeft, Kokkos::HostSpace> faceFluxes()
     {
         Field f("faceFluxes", nCells, NV * (1 + D));
-        const unilag::heat::Faces<D, PH> faces{mesh, bc, state, aux, geom.corner, cellMaterial, materials};
+        const unilag::heat::Faces<D, PH> faces{mesh, bc, state, aux, geom.corner, cellMaterial, materials, {}};
         Kokkos::parallel_for(
             "test::heat::faces", unilag::range(nCells), KOKKOS_LAMBDA(const LO i) {
                 const auto a = faces.side(i);
