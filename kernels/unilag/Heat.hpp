@@ -28,11 +28,11 @@
  *
  *  Order 2 (Faces::rec given: the fluxes at t^n and of the midpoint or stage state). Each side's theta, eps and J are
  *  its limited linear reconstruction at the face centre x_f, w_i,f = w_i + grad w_i . (x_f - x_i) (heat::Quantities,
- *  with the least squares and limiter of Reconstruction.hpp), in the central part and the jump alike; c_h and q from
- *  these values, rho_f still the mean of the cell densities. The jumps are then O(h^2) in smooth regions, so that
- *  the Rusanov dissipation no longer adds an O(h) diffusivity to the Fourier limit. Boundary faces use the side's
- *  face values in the ghost states above. x_f is computed alike from both cells (faceCentre), and a side's values
- *  depend on (cell, x_f) only: the two evaluations of a face stay exact negatives.
+ *  with the least squares and limiter of Reconstruction.hpp, bounding the face-centre values), in the central part and
+ *  the jump alike; c_h and q from these values, rho_f still the mean of the cell densities. The jumps are then
+ *  O(h^2) in smooth regions, so that the Rusanov dissipation no longer adds an O(h) diffusivity to the Fourier limit.
+ *  Boundary faces use the side's face values in the ghost states above. x_f is computed alike from both cells
+ *  (faceCentre), and a side's values depend on (cell, x_f) only: the two evaluations of a face stay exact negatives.
  *
  *  Conservation. Each cell sums its own faces (no atomics; bitwise independent of the thread count and, with
  *  the ghost layer, of the partition). A face flux is computed twice, once from each side, and the two results
@@ -99,6 +99,7 @@ struct Quantities
     static constexpr int theta = 0, eps = 1, J = 2;     //!< quantities (J: D of them)
     static constexpr int nq = 2 + D, ncomp = nq * D;  //!< quantities, columns of the gradient field
     static constexpr int bdata = theta;
+    static constexpr bool atFaces = true; //!< the fluxes use face-centre values only: bound those
     ConstField state, aux;
     BoundaryView bc;
 

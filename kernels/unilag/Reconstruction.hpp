@@ -164,7 +164,8 @@ enum class Limiter
 };
 
 /*! The quantities a reconstruction fits (the Q of limitedGradientsOf): here velocity, pressure and shear stress
- *  (ReconLayout). Q gives nq, the index bdata of the quantity that boundary faces may impose (here the pressure), the
+ *  (ReconLayout). Q gives nq, the index bdata of the quantity that boundary faces may impose (here the pressure),
+ *  atFaces (the limiter bounds the face-centre values, not the vertex values: where Q's users evaluate it), the
  *  values of a cell, the groups across which the cell's mirror image joins the stencil and its mirrored values, and
  *  the imposed boundary value of quantity bdata at a group (false if none). The other Q: heat::Quantities. */
 template <int D, class P>
@@ -172,6 +173,7 @@ struct MechanicalQuantities
 {
     static constexpr int nq = ReconLayout<D, P>::nq;
     static constexpr int bdata = ReconLayout<D, P>::pressure;
+    static constexpr bool atFaces = false; //!< limited at the vertices (the nodal solver evaluates it there)
     ConstField state, aux, stress;
     BoundaryView bc;
 
@@ -332,17 +334,34 @@ void limitedGradientsOf(const MeshView<D>& mesh, const Q& quantities, const Cell
         for (int q = 0; q < NQ; ++q)
         {
             const Vec<D> g = !spans ? Vec<D>::zero() : q == BQ ? solve(Ap, rhsp) : solve(A, rhs[q]);
-            // Barth-Jespersen: the largest phi in [0, 1] that keeps every vertex value within its bounds.
+            // Barth-Jespersen: the largest phi in [0, 1] that keeps every vertex value within its bounds, or
+            // (Q::atFaces) every face-centre value within the widest bounds of the face's vertices.
+            double vhi[NV], vlo[NV];
+            for (int k = 0; k < NV; ++k)
+            {
+                vhi[k] = q == BQ ? pmax[k] : wmax[q];
+                vlo[k] = q == BQ ? pmin[k] : wmin[q];
+                if (perVertex)
+                {
+                    vhi[k] = Kokkos::Experimental::fmax(vhi[k], vmax[k][q]);
+                    vlo[k] = Kokkos::Experimental::fmin(vlo[k], vmin[k][q]);
+                }
+            }
             double phi = 1.0;
             for (int k = 0; k < NV && limit; ++k)
             {
-                const double dw = dot(g, dx[k]);
-                double hi = q == BQ ? pmax[k] : wmax[q];
-                double lo = q == BQ ? pmin[k] : wmin[q];
-                if (perVertex)
+                double dw = dot(g, dx[k]), hi = vhi[k], lo = vlo[k];
+                if constexpr (Q::atFaces)
                 {
-                    hi = Kokkos::Experimental::fmax(hi, vmax[k][q]);
-                    lo = Kokkos::Experimental::fmin(lo, vmin[k][q]);
+                    dw = -dw / D; // face k, opposite vertex k: its centre is at -dx_k / D from the centroid
+                    hi = vhi[(k + 1) % NV];
+                    lo = vlo[(k + 1) % NV];
+                    for (int m = 0; m < NV; ++m)
+                        if (m != k)
+                        {
+                            hi = Kokkos::Experimental::fmax(hi, vhi[m]);
+                            lo = Kokkos::Experimental::fmin(lo, vlo[m]);
+                        }
                 }
                 if (dw > 0.0)
                     phi = Kokkos::Experimental::fmin(phi, (hi - wi[q]) / dw);

@@ -100,13 +100,14 @@ add_test(NAME viscous_shock_becker
 # figure alone cannot see it).
 add_test(NAME heat_conduction_fourier
          COMMAND ${PYTHON} ${SCRIPTS}/heat_conduction.py ${UNILAG} ${INPUTS}/heat_conduction2d.yaml ${WORK} --max-fine-l1 8.0e-5)
-# The same at order 2 (heat fluxes from theta, eps, J reconstructed at the faces, vertex-based limiter: Barth-Jespersen
-# clips the linear profile, chi_eff 1.187, 1.075 chi, first order). The error against the series is the model's own
-# (chi_eff -> 0.961 chi; L1 5.53e-5, 5.66e-5, 5.68e-5 on the three meshes), so the order is the self-convergence of
-# successive meshes: L1 differences 5.20e-6, 1.38e-6, order 1.91 (2.00 without limiter) >= 1.5, the finest <= 2.5e-6
-# (1.8x). Mutations: first-order heat fluxes (no reconstruction) give 1.71e-4, 9.36e-5 (order 0.87, L1 6.54e-5 on the
-# finest); reconstructing the corrector's fluxes only, 1.73e-5, 8.19e-6 (1.08). L1 against the series <= 6.5e-5
-# (1.14x). ~60 s.
+# The same at order 2 (heat fluxes from theta, eps, J reconstructed at the faces, limited at the face centres). The
+# error against the series is the model's own (chi_eff -> 0.961 chi; L1 5.57e-5, 5.67e-5, 5.69e-5 on the three meshes),
+# so the order is the self-convergence of successive meshes: vertex-based limiter, L1 differences 4.46e-6, 1.24e-6,
+# order 1.85 (2.00 without limiter; Barth-Jespersen, which clips extrema: 6.97e-6, 5.28e-6, 0.40) >= 1.5, the finest
+# <= 2.5e-6 (2x). Mutations: first-order heat fluxes (no reconstruction) give 1.71e-4, 9.36e-5 (order 0.87, L1
+# 6.54e-5 on the finest); the corrector's fluxes reconstructed alone 1.73e-5, 8.19e-6 (1.08, limited at the
+# vertices); limiting at the vertices 5.20e-6, 1.38e-6 (1.91; Barth-Jespersen there 8.98e-5, 4.78e-5). L1 against
+# the series <= 6.5e-5 (1.14x). 87 s on the shared 2-core build machine.
 add_test(NAME heat_conduction_fourier_order2
          COMMAND ${PYTHON} ${SCRIPTS}/heat_conduction.py ${UNILAG} ${INPUTS}/heat_conduction2d.yaml ${WORK}/order2
                  --min-order 1.5 --max-fine-diff 2.5e-6 --max-fine-l1 6.5e-5 --set scheme.order=2
