@@ -42,7 +42,9 @@
  *  its corner vectors from its own node order, so A_i = -A_j holds only to round-off for tetrahedra; it is exact
  *  for triangles). Hence the total energy exchanged between owned cells sums to zero up to the round-off of the
  *  per-cell sums. The per-cell quantities of both sides are products and quotients only (no FMA contraction can
- *  make them differ between the two evaluations).
+ *  make them differ between the two evaluations). Order 2 adds the dot products grad w . (x_f - x_i), the same
+ *  expression (sideAt) in both evaluations: the x86-64 build (no -mfma) contracts none; under CUDA, which contracts
+ *  by default, the exact antisymmetry at order 2 is not yet checked (-fmad=false would guarantee it).
  */
 #pragma once
 
@@ -282,7 +284,6 @@ struct Faces
  *  interior faces use the neighbour cellNeighbour(i,k); boundary faces a ghost state from bc.thermal of the face group.
  *  Needs state (StateLayout<D,P>: omega, J) and aux (Aux::theta, Aux::eps) on all local cells (owned and ghosts),
  *  geom.corner of the owned cells and their face neighbours; cells of a material with heat == 0 get zero rates.
- *  Order 2: rec holds heat::Quantities' limited gradients of all local cells (ghosts exchanged), the node positions
  *  The flux formulas and the boundary states are described in the file comment. Order 2: rec holds heat::Quantities'
  *  limited gradients of all local cells (ghosts exchanged), the node positions and the centroids; both sides' values
  *  are then reconstructed at the face centres. */
