@@ -4,7 +4,7 @@
  *
  *  With m_i dE_i/dt = -sum_f (q.n)_f s_f and m_i dJ_i/dt = -sum_f (theta I . n)_f s_f over the NV faces of cell i,
  *  the face fluxes between cell i and the cell j across the face (n the unit normal out of i, s_f the face area)
- *  are, first order (cell values on both sides):
+ *  are, first order (cell values on both sides; order 2 below):
  *     (q.n)_f         = 1/2 (q_i + q_j) . n      - 1/2 lambda_f rho_f (eps_j - eps_i)
  *     (theta I . n)_f = 1/2 (theta_i + theta_j) n - 1/2 lambda_f rho_f (J_j - J_i)
  *  with the heat flux q = alpha^2 theta J (docs/gpr-model.md 1.2), lambda_f = max(c_h,i, c_h,j),
@@ -26,6 +26,14 @@
  *     it only sets the dissipation), J_g = J_i, rho_g = rho_i, same material as cell i.
  *  An interior face without a local neighbour (never for owned cells of a DistributedMesh) is adiabatic.
  *
+ *  Order 2 (Faces::rec given: the fluxes at t^n and of the midpoint or stage state). Each side's theta, eps and J are
+ *  its limited linear reconstruction at the face centre x_f, w_i,f = w_i + grad w_i . (x_f - x_i) (heat::Quantities,
+ *  with the least squares and limiter of Reconstruction.hpp, bounding the face-centre values), in the central part and
+ *  the jump alike; c_h and q from these values, rho_f still the mean of the cell densities. The jumps are then
+ *  O(h^2) in smooth regions, so that the Rusanov dissipation no longer adds an O(h) diffusivity to the Fourier limit.
+ *  Boundary faces use the side's face values in the ghost states above. x_f is computed alike from both cells
+ *  (faceCentre), and a side's values depend on (cell, x_f) only: the two evaluations of a face stay exact negatives.
+ *
  *  Conservation. Each cell sums its own faces (no atomics; bitwise independent of the thread count and, with
  *  the ghost layer, of the partition). A face flux is computed twice, once from each side, and the two results
  *  are exact negatives in floating point: the formulas are symmetric in (i, j) up to the exactly antisymmetric
@@ -34,13 +42,16 @@
  *  its corner vectors from its own node order, so A_i = -A_j holds only to round-off for tetrahedra; it is exact
  *  for triangles). Hence the total energy exchanged between owned cells sums to zero up to the round-off of the
  *  per-cell sums. The per-cell quantities of both sides are products and quotients only (no FMA contraction can
- *  make them differ between the two evaluations).
+ *  make them differ between the two evaluations). Order 2 adds the dot products grad w . (x_f - x_i), the same
+ *  expression (sideAt) in both evaluations: the x86-64 build (no -mfma) contracts none; under CUDA, which contracts
+ *  by default, the exact antisymmetry at order 2 is not yet checked (-fmad=false would guarantee it).
  */
 #pragma once
 
 #include "unilag/Geometry.hpp"
 #include "unilag/Gpr.hpp"
 #include "unilag/Physics.hpp"
+#include "unilag/Reconstruction.hpp"
 #include "unilag/Reduce.hpp"
 
 namespace unilag
@@ -81,6 +92,71 @@ KOKKOS_INLINE_FUNCTION void rusanov(const Side<D>& a, const Side<D>& b, const Ve
         fJ[d] = theta * S[d] - diss * (b.J[d] - a.J[d]);
 }
 
+/*! Order 2: the heat quantities' reconstruction (limitedGradientsOf; columns q * D + d of the gradient field) and
+ *  their boundary treatment: adiabatic faces mirror the cell (J reflected, as the ghost state), an isothermal wall's
+ *  temperature is boundary data of theta. */
+template <int D, class P>
+struct Quantities
+{
+    static constexpr int theta = 0, eps = 1, J = 2;     //!< quantities (J: D of them)
+    static constexpr int nq = 2 + D, ncomp = nq * D;  //!< quantities, columns of the gradient field
+    static constexpr int bdata = theta;
+    static constexpr bool atFaces = true; //!< the fluxes use face-centre values only: bound those
+    ConstField state, aux;
+    BoundaryView bc;
+
+    KOKKOS_INLINE_FUNCTION void values(LO j, double (&w)[nq]) const
+    {
+        w[theta] = aux(j, Aux::theta);
+        w[eps] = aux(j, Aux::eps);
+        for (int d = 0; d < D; ++d)
+            w[J + d] = state(j, StateLayout<D, P>::J + d);
+    }
+    KOKKOS_INLINE_FUNCTION bool mirrors(int g) const { return bc.thermal(g) != ThermalIsothermal; }
+    KOKKOS_INLINE_FUNCTION void mirror(const Vec<D>& n, double (&w)[nq]) const
+    {
+        double jn = 0.0;
+        for (int a = 0; a < D; ++a)
+            jn += w[J + a] * n[a];
+        for (int a = 0; a < D; ++a)
+            w[J + a] -= 2.0 * jn * n[a];
+    }
+    KOKKOS_INLINE_FUNCTION bool boundaryValue(int g, double& value) const
+    {
+        if (bc.thermal(g) != ThermalIsothermal)
+            return false;
+        value = bc.temperature(g);
+        return true;
+    }
+};
+
+/*! Centre of face k of cell i (the mean of its vertices), bitwise the same from either cell of the face: in 3D the
+ *  three coordinates are summed in increasing order (the cells list the face's nodes in different orders). */
+template <int D>
+KOKKOS_INLINE_FUNCTION Vec<D> faceCentre(const MeshView<D>& mesh, const ConstField& x, LO i, int k)
+{
+    LO fv[D];
+    int nf = 0;
+    for (int m = 0; m < D + 1; ++m)
+        if (m != k)
+            fv[nf++] = mesh.cellNodes(i, m);
+    Vec<D> c;
+    for (int a = 0; a < D; ++a)
+    {
+        if constexpr (D == 2)
+            c[a] = 0.5 * (x(fv[0], a) + x(fv[1], a));
+        else
+        {
+            using Kokkos::Experimental::fmax, Kokkos::Experimental::fmin;
+            const double u = x(fv[0], a), v = x(fv[1], a), w = x(fv[2], a);
+            const double lo = fmin(u, fmin(v, w)), hi = fmax(u, fmax(v, w));
+            const double mid = fmax(fmin(u, v), fmin(fmax(u, v), w)); // the median
+            c[a] = (lo + mid + hi) / 3.0;
+        }
+    }
+    return c;
+}
+
 //! Adiabatic face (mirror state) in closed form: (q.n) s = 0, (theta I . n) s = (theta + c_h rho J.n) n s.
 template <int D>
 KOKKOS_INLINE_FUNCTION void adiabatic(const Side<D>& a, const Vec<D>& S, double s, double& fE, Vec<D>& fJ)
@@ -105,30 +181,58 @@ struct Faces
     Field corner;
     View<const int*> cellMaterial;
     View<const Material*> materials;
+    Reconstruction<D> rec; //!< order 2: Quantities' gradients (empty: cell values, first order)
 
-    KOKKOS_INLINE_FUNCTION Side<D> side(LO i) const
+    //! Side of cell i with the given theta, eps, J (its cell values, or reconstructed at a face).
+    KOKKOS_INLINE_FUNCTION Side<D> side(LO i, double theta, double eps, const Vec<D>& J) const
     {
         const Material& m = materials(cellMaterial(i));
         Side<D> s;
         s.heat = m.heat;
         s.rho = 1.0 / state(i, S::omega);
-        s.theta = aux(i, Aux::theta);
-        s.eps = aux(i, Aux::eps);
+        s.theta = theta;
+        s.eps = eps;
         s.alpha = m.alpha;
         s.alpha2 = m.alpha * m.alpha;
         s.cv = m.eos.cv;
         s.ch = heatSpeed(m.alpha, s.rho, s.theta, s.cv);
         for (int d = 0; d < D; ++d)
         {
-            s.J[d] = state(i, S::J + d);
+            s.J[d] = J[d];
             s.q[d] = s.alpha2 * s.theta * s.J[d];
         }
         return s;
     }
 
-    /*! \brief Fluxes (q.n) s and (theta I . n) s out of cell i (state a = side(i)) through its face k. */
-    KOKKOS_INLINE_FUNCTION void face(LO i, const Side<D>& a, int k, double& fE, Vec<D>& fJ) const
+    KOKKOS_INLINE_FUNCTION Side<D> side(LO i) const
     {
+        Vec<D> J;
+        for (int d = 0; d < D; ++d)
+            J[d] = state(i, S::J + d);
+        return side(i, aux(i, Aux::theta), aux(i, Aux::eps), J);
+    }
+
+    /*! Side of cell i at the face centre xf: theta, eps, J reconstructed (w_i + grad w_i . (xf - x_i)), rho the cell's.
+     *  A function of (i, xf) only, so that both cells of a face evaluate it bitwise alike. */
+    KOKKOS_INLINE_FUNCTION Side<D> sideAt(LO i, const Vec<D>& xf) const
+    {
+        using H = Quantities<D, P>;
+        Vec<D> dx, J;
+        for (int d = 0; d < D; ++d)
+            dx[d] = xf[d] - rec.centroid(i, d);
+        for (int d = 0; d < D; ++d)
+            J[d] = state(i, S::J + d) + rec.delta(i, H::J + d, dx);
+        return side(i, aux(i, Aux::theta) + rec.delta(i, H::theta, dx), aux(i, Aux::eps) + rec.delta(i, H::eps, dx), J);
+    }
+
+    /*! \brief Fluxes (q.n) s and (theta I . n) s out of cell i (cell values c = side(i)) through its face k. */
+    KOKKOS_INLINE_FUNCTION void face(LO i, const Side<D>& c, int k, double& fE, Vec<D>& fJ) const
+    {
+        const bool second = rec.active();
+        Vec<D> xf;
+        if (second)
+            xf = faceCentre<D>(mesh, rec.x, i, k);
+        const Side<D> a = second ? sideAt(i, xf) : c;
         Vec<D> A; // outward area vector of face k
         for (int d = 0; d < D; ++d)
             A[d] = -double(D) * corner(i, k * D + d);
@@ -156,7 +260,7 @@ struct Faces
             adiabatic(a, A, norm(A), fE, fJ);
             return;
         }
-        const Side<D> b = side(j);
+        const Side<D> b = second ? sideAt(j, xf) : side(j);
         // antisymmetrised area vector (A_i - A_j)/2 = (D/2)(c_j,m - c_i,k), m the face of j facing i
         for (int m = 0; m < NV; ++m)
             if (mesh.cellNeighbour(j, m) == i)
@@ -180,14 +284,16 @@ struct Faces
  *  interior faces use the neighbour cellNeighbour(i,k); boundary faces a ghost state from bc.thermal of the face group.
  *  Needs state (StateLayout<D,P>: omega, J) and aux (Aux::theta, Aux::eps) on all local cells (owned and ghosts),
  *  geom.corner of the owned cells and their face neighbours; cells of a material with heat == 0 get zero rates.
- *  The flux formulas and the boundary states are described in the file comment. */
+ *  The flux formulas and the boundary states are described in the file comment. Order 2: rec holds heat::Quantities'
+ *  limited gradients of all local cells (ghosts exchanged), the node positions and the centroids; both sides' values
+ *  are then reconstructed at the face centres. */
 template <int D, class P>
 void heatFluxes(const MeshView<D>& mesh, const BoundaryView& bc, const ConstField& state, const ConstField& aux,
                 const CellGeometry& geom, const View<const int*>& cellMaterial, const View<const Material*>& materials,
-                const Field& rate)
+                const Field& rate, const Reconstruction<D>& rec = Reconstruction<D>())
 {
     constexpr int NV = D + 1;
-    const heat::Faces<D, P> faces{mesh, bc, state, aux, geom.corner, cellMaterial, materials};
+    const heat::Faces<D, P> faces{mesh, bc, state, aux, geom.corner, cellMaterial, materials, rec};
     auto cell = KOKKOS_LAMBDA(const LO i)
     {
         const heat::Side<D> a = faces.side(i);

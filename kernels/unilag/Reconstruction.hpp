@@ -163,22 +163,48 @@ enum class Limiter
     VertexBased
 };
 
-/*! \brief Limited gradients of the owned cells (docs/gpr-model.md 2.5) into grad (cells x ReconLayout::ncomp), from the
- *  cell values of all local cells (state and aux current for ghosts too, stress: the shear stress, strain variants) on
- *  the configuration x with geometry geom (centroids of all local cells). Limiter::None gives the plain
- *  least-squares gradients (exact for linear fields). Which limiter for which flow: README, Limiter.
- *  With bc given, slip walls and symmetry planes mirror the cell (file comment), and an imposed boundary pressure is
- *  boundary data of the pressure: a point of its least-squares fit at the face centroid, and a bound of the face's
- *  vertices (without the bound the limiter clips every monotone pressure profile at such a boundary to first
- *  order; without the fit Kidder's unlimited shell tangled on coarse meshes). */
+/*! The quantities a reconstruction fits (the Q of limitedGradientsOf): here velocity, pressure and shear stress
+ *  (ReconLayout). Q gives nq, the index bdata of the quantity that boundary faces may impose (here the pressure),
+ *  atFaces (the limiter bounds the face-centre values, not the vertex values: where Q's users evaluate it), the
+ *  values of a cell, the groups across which the cell's mirror image joins the stencil and its mirrored values, and
+ *  the imposed boundary value of quantity bdata at a group (false if none). The other Q: heat::Quantities. */
 template <int D, class P>
-void limitedGradients(const MeshView<D>& mesh, const ConstField& state, const ConstField& aux,
-                      const ConstField& stress, const CellGeometry& geom, const ConstField& x, const Field& grad,
-                      const BoundaryView& bc = BoundaryView(), Limiter limiter = Limiter::BarthJespersen)
+struct MechanicalQuantities
 {
-    using R = ReconLayout<D, P>;
+    static constexpr int nq = ReconLayout<D, P>::nq;
+    static constexpr int bdata = ReconLayout<D, P>::pressure;
+    static constexpr bool atFaces = false; //!< limited at the vertices (the nodal solver evaluates it there)
+    ConstField state, aux, stress;
+    BoundaryView bc;
+
+    KOKKOS_INLINE_FUNCTION void values(LO j, double (&w)[nq]) const { reconValues<D, P>(state, aux, stress, j, w); }
+    KOKKOS_INLINE_FUNCTION bool mirrors(int g) const { return bc.type(g) == BcSlipWall; }
+    KOKKOS_INLINE_FUNCTION void mirror(const Vec<D>& n, double (&w)[nq]) const { mirrorValues<D, P>(n, w); }
+    KOKKOS_INLINE_FUNCTION bool boundaryValue(int g, double& value) const
+    {
+        if (bc.type(g) != BcPressure)
+            return false;
+        value = bc.value(g, 0);
+        return true;
+    }
+};
+
+/*! \brief Limited gradients of the owned cells (docs/gpr-model.md 2.5) of the quantities Q into grad (cells x
+ *  Q::nq * D), from the cell values of all local cells (current for ghosts too) on the configuration x with geometry
+ *  geom (centroids of all local cells). Limiter::None gives the plain least-squares gradients (exact for linear
+ *  fields). Which limiter for which flow: README, Limiter.
+ *  With bc given, the cell's mirror image across the groups Q mirrors joins the stencil (file comment), and an
+ *  imposed boundary value of quantity Q::bdata is boundary data: a point of its least-squares fit at the face
+ *  centroid, and a bound of the face's vertices (for the pressure: without the bound the limiter clips every monotone
+ *  pressure profile at such a boundary to first order; without the fit Kidder's unlimited shell tangled on coarse
+ *  meshes). */
+template <int D, class Q>
+void limitedGradientsOf(const MeshView<D>& mesh, const Q& quantities, const CellGeometry& geom, const ConstField& x,
+                        const Field& grad, const BoundaryView& bc, Limiter limiter)
+{
     constexpr int NV = D + 1;
-    constexpr int NQ = R::nq;
+    constexpr int NQ = Q::nq;
+    constexpr int BQ = Q::bdata;
     auto centroid = geom.centroid;
     const bool hasBc = bc.type.extent(0) > 0;
     const bool limit = limiter != Limiter::None;
@@ -186,10 +212,10 @@ void limitedGradients(const MeshView<D>& mesh, const ConstField& state, const Co
     auto gradient = KOKKOS_LAMBDA(const LO i)
     {
         double wi[NQ], wj[NQ], wmin[NQ], wmax[NQ]; // wmin, wmax: over the cell and its face neighbours
-        double pmin[NV], pmax[NV];                  // pressure bounds per vertex, with imposed boundary pressures
+        double pmin[NV], pmax[NV];                  // bounds of quantity BQ per vertex, with imposed boundary values
         double vmin[NV][NQ], vmax[NV][NQ];          // VertexBased: over the cells around each vertex
         Vec<D> rhs[NQ];
-        reconValues<D, P>(state, aux, stress, i, wi);
+        quantities.values(i, wi);
         for (int q = 0; q < NQ; ++q)
         {
             wmin[q] = wmax[q] = wi[q];
@@ -221,7 +247,7 @@ void limitedGradients(const MeshView<D>& mesh, const ConstField& state, const Co
                     d[a] = centroid(j, a) - xi[a];
                 const double w = 1.0 / dot(d, d);
                 A.addOuter(w, d);
-                reconValues<D, P>(state, aux, stress, j, wj);
+                quantities.values(j, wj);
                 for (int q = 0; q < NQ; ++q)
                     rhs[q] = rhs[q] + (w * (wj[q] - wi[q])) * d;
                 if (perVertex)
@@ -232,17 +258,18 @@ void limitedGradients(const MeshView<D>& mesh, const ConstField& state, const Co
                     }
             }
         }
-        // Bounds over the face neighbours. Across a slip wall or symmetry plane the cell's mirror image stands in for
-        // the neighbour, and joins the stencil too (with a face neighbour's weight), as in the symmetric flow.
+        // Bounds over the face neighbours. Across a slip wall or symmetry plane (a group Q mirrors) the cell's mirror
+        // image stands in for the neighbour, and joins the stencil too (with a face neighbour's weight), as in the
+        // symmetric flow.
         for (int f = 0; f < NV; ++f)
         {
             const LO j = mesh.cellNeighbour(i, f);
             if (j >= 0)
-                reconValues<D, P>(state, aux, stress, j, wj);
+                quantities.values(j, wj);
             else
             {
                 const int g = hasBc ? mesh.cellFaceGroup(i, f) : -1;
-                if (g < 0 || bc.type(g) != BcSlipWall)
+                if (g < 0 || !quantities.mirrors(g))
                     continue;
                 LO vertex;
                 const Vec<D> n = faceUnitNormal<D>(mesh, x, i, f, vertex);
@@ -254,7 +281,7 @@ void limitedGradients(const MeshView<D>& mesh, const ConstField& state, const Co
                 A.addOuter(w, d);
                 for (int q = 0; q < NQ; ++q)
                     wj[q] = wi[q];
-                mirrorValues<D, P>(n, wj);
+                quantities.mirror(n, wj);
                 for (int q = 0; q < NQ; ++q)
                     rhs[q] = rhs[q] + (w * (wj[q] - wi[q])) * d;
             }
@@ -266,25 +293,25 @@ void limitedGradients(const MeshView<D>& mesh, const ConstField& state, const Co
         }
         for (int k = 0; k < NV; ++k)
         {
-            pmin[k] = wmin[R::pressure];
-            pmax[k] = wmax[R::pressure];
+            pmin[k] = wmin[BQ];
+            pmax[k] = wmax[BQ];
         }
-        Mat<D> Ap = A;                   // the pressure's own fit: imposed boundary pressures are data at their faces
-        Vec<D> rhsp = rhs[R::pressure];
+        Mat<D> Ap = A;                   // quantity BQ's own fit: imposed boundary values are data at their faces
+        Vec<D> rhsp = rhs[BQ];
         if (hasBc)
             for (int f = 0; f < NV; ++f)
             {
                 const int g = mesh.cellFaceGroup(i, f);
-                if (g < 0 || bc.type(g) != BcPressure)
+                double pb;
+                if (g < 0 || !quantities.boundaryValue(g, pb))
                     continue;
-                const double pb = bc.value(g, 0);
                 Vec<D> d = Vec<D>::zero(); // face centroid - cell centroid
                 for (int k = 0; k < NV; ++k)
                     if (k != f)
                         d = d + (1.0 / D) * dx[k];
                 const double w = double(D) / dot(d, d); // as a face neighbour (D shared vertices) at its distance
                 Ap.addOuter(w, d);
-                rhsp = rhsp + (w * (pb - wi[R::pressure])) * d;
+                rhsp = rhsp + (w * (pb - wi[BQ])) * d;
                 for (int k = 0; k < NV; ++k) // the vertices of face f
                     if (k != f)
                     {
@@ -306,18 +333,35 @@ void limitedGradients(const MeshView<D>& mesh, const ConstField& state, const Co
         const bool spans = det > 1e-10 * (D == 2 ? scale * scale : scale * scale * scale);
         for (int q = 0; q < NQ; ++q)
         {
-            const Vec<D> g = !spans ? Vec<D>::zero() : q == R::pressure ? solve(Ap, rhsp) : solve(A, rhs[q]);
-            // Barth-Jespersen: the largest phi in [0, 1] that keeps every vertex value within its bounds.
+            const Vec<D> g = !spans ? Vec<D>::zero() : q == BQ ? solve(Ap, rhsp) : solve(A, rhs[q]);
+            // Barth-Jespersen: the largest phi in [0, 1] that keeps every vertex value within its bounds, or
+            // (Q::atFaces) every face-centre value within the widest bounds of the face's vertices.
+            double vhi[NV], vlo[NV];
+            for (int k = 0; k < NV; ++k)
+            {
+                vhi[k] = q == BQ ? pmax[k] : wmax[q];
+                vlo[k] = q == BQ ? pmin[k] : wmin[q];
+                if (perVertex)
+                {
+                    vhi[k] = Kokkos::Experimental::fmax(vhi[k], vmax[k][q]);
+                    vlo[k] = Kokkos::Experimental::fmin(vlo[k], vmin[k][q]);
+                }
+            }
             double phi = 1.0;
             for (int k = 0; k < NV && limit; ++k)
             {
-                const double dw = dot(g, dx[k]);
-                double hi = q == R::pressure ? pmax[k] : wmax[q];
-                double lo = q == R::pressure ? pmin[k] : wmin[q];
-                if (perVertex)
+                double dw = dot(g, dx[k]), hi = vhi[k], lo = vlo[k];
+                if constexpr (Q::atFaces)
                 {
-                    hi = Kokkos::Experimental::fmax(hi, vmax[k][q]);
-                    lo = Kokkos::Experimental::fmin(lo, vmin[k][q]);
+                    dw = -dw / D; // face k, opposite vertex k: its centre is at -dx_k / D from the centroid
+                    hi = vhi[(k + 1) % NV];
+                    lo = vlo[(k + 1) % NV];
+                    for (int m = 0; m < NV; ++m)
+                        if (m != k)
+                        {
+                            hi = Kokkos::Experimental::fmax(hi, vhi[m]);
+                            lo = Kokkos::Experimental::fmin(lo, vlo[m]);
+                        }
                 }
                 if (dw > 0.0)
                     phi = Kokkos::Experimental::fmin(phi, (hi - wi[q]) / dw);
@@ -329,6 +373,17 @@ void limitedGradients(const MeshView<D>& mesh, const ConstField& state, const Co
         }
     };
     Kokkos::parallel_for("unilag::recon::limited_gradients", range(mesh.nOwnedCells), gradient);
+}
+
+/*! \brief Limited gradients of velocity, pressure and (strain variants) the shear stress `stress` into grad (cells x
+ *  ReconLayout::ncomp): limitedGradientsOf with MechanicalQuantities (slip walls and symmetry planes mirror the cell,
+ *  an imposed boundary pressure is boundary data). */
+template <int D, class P>
+void limitedGradients(const MeshView<D>& mesh, const ConstField& state, const ConstField& aux,
+                      const ConstField& stress, const CellGeometry& geom, const ConstField& x, const Field& grad,
+                      const BoundaryView& bc = BoundaryView(), Limiter limiter = Limiter::BarthJespersen)
+{
+    limitedGradientsOf<D>(mesh, MechanicalQuantities<D, P>{state, aux, stress, bc}, geom, x, grad, bc, limiter);
 }
 
 } // namespace unilag

@@ -18,7 +18,8 @@ template <int D, class P> void GprOperator<D, P>::midpointState(double t, double
  *  the geometry of the owned cells in geomNew. These become the stage state (state_mid, x_mid, geomMid: the midpoint
  *  of a midpoint step, Q^1 of ARS(2,2,2)): its ghosts are completed, EOS and stress computed, its gradients
  *  reconstructed (limited, exchanged), and the nodes solved with its own stress and reconstructed values at time
- *  tStage (boundary pressures at that time). Heat variants: its Rusanov fluxes. Collective. */
+ *  tStage (boundary pressures at that time). Heat variants: its Rusanov fluxes from theta, eps, J reconstructed at
+ *  the faces (their own limited gradients, exchanged). Collective. */
 template <int D, class P> void GprOperator<D, P>::stageState(double tStage)
 {
     auto& md = md_;
@@ -49,8 +50,17 @@ template <int D, class P> void GprOperator<D, P>::stageState(double tStage)
     rec_ = Reconstruction<D>{md.read("gradients"), xm, md.geomMid.centroid};
     if constexpr (P::heat)
     {
+        // second order in space: theta, eps, J reconstructed at the faces (as the predictor's, heatFluxes)
+        {
+            ScopedTimer timer(md.timers, Phase::Reconstruction);
+            limitedGradientsOf<D>(md.m, heat::Quantities<D, P>{sm, md.auxMid, md.bc}, md.geomMid, xm,
+                                  md.write("heat_gradients"), md.bc, md.limiter);
+        }
+        halo("heat_gradients");
+        heatRec_ = Reconstruction<D>{md.read("heat_gradients"), xm, md.geomMid.centroid};
         ScopedTimer timer(md.timers, Phase::HeatFluxes);
-        unilag::heatFluxes<D, P>(md.m, md.bc, sm, md.auxMid, md.geomMid, md.cellMaterial, md.materials, md.heatRateMid);
+        unilag::heatFluxes<D, P>(md.m, md.bc, sm, md.auxMid, md.geomMid, md.cellMaterial, md.materials, md.heatRateMid,
+                                 heatRec_);
     }
     {
         ScopedTimer timer(md.timers, Phase::NodalSolve);
@@ -88,7 +98,7 @@ template <int D, class P> bool GprOperator<D, P>::correctorUpdate(double dt, Upd
                                                       md.write("state_new"), ConstField(), md.heatRateMid, md.geomNew,
                                                       midpoint));
     }
-    balance_ = balanceOf(subcellForces<D, P>(md.m, sm, md.auxMid, md.sigmaMid, md.geomMid, v, midpoint));
+    balance_ = balanceOf(subcellForces<D, P>(md.m, sm, md.auxMid, md.sigmaMid, md.geomMid, v, midpoint), heatRec_);
     return true;
 }
 

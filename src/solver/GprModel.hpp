@@ -8,7 +8,9 @@
  *          (strain: the Picard start's history), sigma_prev2 (strain, order 2), plastic_hint (plastic: each cell's
  *          last plastic-flow parameter), plastic_hint_corrector (plastic, order 2); scratch: state_new, sigma
  *          (the stress iterate), sigma_next, sigma0, state_mid, gradients (midpoint),
- *          gradients_n (order 2: the state at t^n); ars222 (GprArs.hpp), created on first use: ars_rates0,
+ *          gradients_n (order 2: the state at t^n), heat_gradients, heat_gradients_n (order 2, heat: theta,
+ *          eps, J of the midpoint and of t^n);
+ *          ars222 (GprArs.hpp), created on first use: ars_rates0,
  *          ars_rates1 (stored stage rates), ars_strain_increment (stage 1's G_e transport increment);
  *   nodes  x (positions); scratch: x_new, v_node, v_node0, x_mid; ars222: ars_v0, ars_v1 (stage velocities).
  */
@@ -26,6 +28,7 @@
 #include "physics/Expression.hpp"
 #include "state/FieldSet.hpp"
 #include "unilag/CellUpdate.hpp"
+#include "unilag/Heat.hpp"
 
 namespace unilag
 {
@@ -137,7 +140,11 @@ GprModel<D, P>::GprModel(const Scene& scene_, std::shared_ptr<DistributedMesh> m
         if constexpr (P::strain)
             sigmaMid = Field("unilag::sigmaMid", dm.nCells, 6);
         if constexpr (P::heat)
+        {
             heatRateMid = Field("unilag::heatRateMid", dm.nOwnedCells, 1 + D);
+            fields.add("heat_gradients", Entity::Cell, heat::Quantities<D, P>::ncomp, S_);
+            fields.add("heat_gradients_n", Entity::Cell, heat::Quantities<D, P>::ncomp, S_);
+        }
     }
     cellMaterial = View<int*>("unilag::cellMaterial", dm.nCells);
 }

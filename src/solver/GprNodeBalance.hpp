@@ -36,7 +36,8 @@ template <int D, class P> void GprOperator<D, P>::selectBalanceNodes(bool everyN
 }
 
 //! The balance of the given forces at the selected nodes and the heat through isothermal walls. Collective.
-template <int D, class P> BalanceRates<D> GprOperator<D, P>::balanceOf(const SubcellForces<D, P>& forces)
+template <int D, class P>
+BalanceRates<D> GprOperator<D, P>::balanceOf(const SubcellForces<D, P>& forces, const Reconstruction<D>& heatRec)
 {
     ScopedTimer timer(md_.timers, Phase::Check);
     const NodeBalanceRates<D> local = nodeBalance<D, P>(forces, md_.bc, balanceNodes_, balanceScratch_);
@@ -50,7 +51,8 @@ template <int D, class P> BalanceRates<D> GprOperator<D, P>::balanceOf(const Sub
     if constexpr (P::heat)
         if (md_.isothermalWalls)
             sums[D + 2] = boundaryHeatRate<D, P>(heat::Faces<D, P>{md_.m, md_.bc, forces.state, forces.aux,
-                                                                   forces.corner, md_.cellMaterial, md_.materials});
+                                                                   forces.corner, md_.cellMaterial, md_.materials,
+                                                                   heatRec});
     mpi::allSum(md_.comm, sums);
     for (int d = 0; d < D; ++d)
         r.impulse[d] = sums[d];

@@ -96,12 +96,25 @@ template <int D, class P> class GprOperator
         recStart_ = Reconstruction<D>{md_.read("gradients_n"), md_.read("x"), md_.geom.centroid};
     }
 
-    //! Explicit heat fluxes of the state at t^n (2.3): independent of dt.
+    /*! Explicit heat fluxes of the state at t^n (2.3): independent of dt. Order 2: from theta, eps, J reconstructed
+     *  at the faces, as the midpoint's (with first-order fluxes here the self-convergence of the heat-conduction
+     *  scene stays at order 1.06). Collective at order 2. */
     void heatFluxes()
     {
+        heatRecStart_ = Reconstruction<D>();
+        if (md_.order2)
+        {
+            {
+                ScopedTimer timer(md_.timers, Phase::Reconstruction);
+                limitedGradientsOf<D>(md_.m, heat::Quantities<D, P>{md_.read("state"), md_.aux, md_.bc}, md_.geom,
+                                      md_.read("x"), md_.write("heat_gradients_n"), md_.bc, md_.limiter);
+            }
+            halo("heat_gradients_n");
+            heatRecStart_ = Reconstruction<D>{md_.read("heat_gradients_n"), md_.read("x"), md_.geom.centroid};
+        }
         ScopedTimer timer(md_.timers, Phase::HeatFluxes);
         unilag::heatFluxes<D, P>(md_.m, md_.bc, md_.read("state"), md_.aux, md_.geom, md_.cellMaterial, md_.materials,
-                                 md_.heatRate);
+                                 md_.heatRate, heatRecStart_);
     }
 
     //! The largest stable step over all ranks: CFL and the volume-change bound. Collective.
@@ -137,7 +150,8 @@ template <int D, class P> class GprOperator
                                                   md_.cellMaterial, md_.materials, x, xn, v, dt, md_.write("state_new"),
                                                   sigma, md_.heatRate, md_.geomNew, flux));
         }
-        balance_ = balanceOf(subcellForces<D, P>(md_.m, md_.read("state"), md_.aux, sigma, md_.geom, v, flux));
+        balance_ = balanceOf(subcellForces<D, P>(md_.m, md_.read("state"), md_.aux, sigma, md_.geom, v, flux),
+                             heatRecStart_);
         return check;
     }
 
@@ -200,10 +214,13 @@ template <int D, class P> class GprOperator
     }
 
     PicardCheck strainStep(double dt, bool midpoint);
-    BalanceRates<D> balanceOf(const SubcellForces<D, P>& forces);
+    //! heatRec: the heat fluxes' reconstruction of the forces' state (the stage state's heatRec_; none at t^n)
+    BalanceRates<D> balanceOf(const SubcellForces<D, P>& forces, const Reconstruction<D>& heatRec = {});
     GprModel<D, P>& md_;
     Reconstruction<D> recStart_; //!< order 2: the limited gradients of the state at t^n (predictor)
     Reconstruction<D> rec_;      //!< order 2: the midpoint state's limited gradients
+    Reconstruction<D> heatRec_;  //!< order 2, heat: the midpoint state's theta, eps, J gradients
+    Reconstruction<D> heatRecStart_; //!< order 2, heat: those of the state at t^n
     bool keepIncrement_ = false; //!< ARS(2,2,2) stage 1: strainStep keeps dT in the field ars_strain_increment
     View<LO*> balanceNodes_; //!< owned nodes whose balance is evaluated (selectBalanceNodes)
     Field balanceScratch_;   //!< per node: NodeBalanceLayout

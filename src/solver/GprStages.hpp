@@ -35,7 +35,7 @@ template <int D, class P> void GprOperator<D, P>::storeStageRates(const std::str
         ScopedTimer timer(md_.timers, Phase::CellUpdate);
         storeRates<D, P>(forces, stage ? md_.heatRateMid : md_.heatRate, md_.write(name));
     }
-    stageBalance_[name] = balanceOf(forces); // the forces' views are overwritten by the next stage
+    stageBalance_[name] = balanceOf(forces, stage ? heatRec_ : heatRecStart_); // views overwritten next stage
 }
 
 /*! Updates the owned cells from stored stages (name, weight), at most three: v, E (and J, then relaxed) from
