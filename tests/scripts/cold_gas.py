@@ -1,5 +1,6 @@
 #!/usr/bin/env python3
-"""A cold-gas run (pressure 0 ahead of the shock; docs/cold-gas.md) against its bounds, from its output directory:
+"""A Sedov run (a cold gas, pressure 0 ahead of the shock, docs/cold-gas.md; or any other) against its bounds, from its
+output directory:
   - summary.json: status "completed" and t_final = T_END (the run reached its end time: a cold gas no longer stops
     at t = 0 on a zero impedance);
   - every field of the last output is finite (no NaN, no inf), the pressure and the specific internal energy are
