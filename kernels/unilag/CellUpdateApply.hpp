@@ -91,10 +91,11 @@ UpdateCheck applyUpdate(const MeshView<D>& mesh, const ConstField& state, const 
         const double ratio = sNew.volume / volume(i);
         // Admissible state: a non-negative squared sound speed (for an ideal gas: a non-negative internal energy;
         // a cold gas, p = 0, has c0 = 0 and the nodal solver's shock impedance, nodalImpedance).
-        const double eps = internalEnergy<D, P>(m, E, v, G, J);
+        // A cold cell's E - kinetic is zero only up to round-off: eps in [-epsRoundoff, 0) counts as 0 (cold-gas.md).
+        double eps = internalEnergy<D, P>(m, E, v, G, J);
+        if (eps < 0.0 && eps >= -m.epsRoundoff)
+            eps = 0.0;
         double c2 = gpr::soundSpeed2(m.eos, rhoNew, gpr::pressure(m.eos, rhoNew, eps));
-        if (c2 < 0.0 && eps >= -m.epsRoundoff)
-            c2 = 0.0; // a cold cell's E - kinetic, zero up to round-off (docs/cold-gas.md)
         if (!(c2 == c2) || !(omega == omega))
             c2 = -Kokkos::reduction_identity<double>::min(); // NaN: report as the worst possible
         ext[0] = Kokkos::Experimental::fmin(ext[0], ratio);
