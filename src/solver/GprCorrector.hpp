@@ -51,13 +51,7 @@ template <int D, class P> void GprOperator<D, P>::stageState(double tStage)
     if constexpr (P::heat)
     {
         // second order in space: theta, eps, J reconstructed at the faces (as the predictor's, heatFluxes)
-        {
-            ScopedTimer timer(md.timers, Phase::Reconstruction);
-            limitedGradientsOf<D>(md.m, heat::Quantities<D, P>{sm, md.auxMid, md.bc}, md.geomMid, xm,
-                                  md.write("heat_gradients"), md.bc, md.limiter);
-        }
-        halo("heat_gradients");
-        heatRec_ = Reconstruction<D>{md.read("heat_gradients"), xm, md.geomMid.centroid};
+        heatRec_ = reconstructHeat(sm, md.auxMid, md.geomMid, xm, "heat_gradients");
         ScopedTimer timer(md.timers, Phase::HeatFluxes);
         unilag::heatFluxes<D, P>(md.m, md.bc, sm, md.auxMid, md.geomMid, md.cellMaterial, md.materials, md.heatRateMid,
                                  heatRec_);

@@ -101,17 +101,9 @@ template <int D, class P> class GprOperator
      *  scene stays at order 1.06). Collective at order 2. */
     void heatFluxes()
     {
-        heatRecStart_ = Reconstruction<D>();
-        if (md_.order2)
-        {
-            {
-                ScopedTimer timer(md_.timers, Phase::Reconstruction);
-                limitedGradientsOf<D>(md_.m, heat::Quantities<D, P>{md_.read("state"), md_.aux, md_.bc}, md_.geom,
-                                      md_.read("x"), md_.write("heat_gradients_n"), md_.bc, md_.limiter);
-            }
-            halo("heat_gradients_n");
-            heatRecStart_ = Reconstruction<D>{md_.read("heat_gradients_n"), md_.read("x"), md_.geom.centroid};
-        }
+        heatRecStart_ = md_.order2 ? reconstructHeat(md_.read("state"), md_.aux, md_.geom, md_.read("x"),
+                                                     "heat_gradients_n")
+                                   : Reconstruction<D>();
         ScopedTimer timer(md_.timers, Phase::HeatFluxes);
         unilag::heatFluxes<D, P>(md_.m, md_.bc, md_.read("state"), md_.aux, md_.geom, md_.cellMaterial, md_.materials,
                                  md_.heatRate, heatRecStart_);
@@ -211,6 +203,20 @@ template <int D, class P> class GprOperator
         if constexpr (P::strain)
             return md_.read("sigma");
         return ConstField();
+    }
+
+    //! Order 2, heat: the limited gradients of theta, eps, J of (state, aux) on (geom, x), into the field name and
+    //! exchanged. Collective.
+    Reconstruction<D> reconstructHeat(const ConstField& state, const ConstField& aux, const CellGeometry& geom,
+                                      const ConstField& x, const char* name)
+    {
+        {
+            ScopedTimer timer(md_.timers, Phase::Reconstruction);
+            limitedGradientsOf<D>(md_.m, heat::Quantities<D, P>{state, aux, md_.bc}, geom, x, md_.write(name), md_.bc,
+                                  md_.limiter);
+        }
+        halo(name);
+        return Reconstruction<D>{md_.read(name), x, geom.centroid};
     }
 
     PicardCheck strainStep(double dt, bool midpoint);
