@@ -176,6 +176,12 @@ int main(int argc, char** argv)
                 std::fprintf(stderr, "unilag: error: %s\n", e.what());
             code = unilag::ExitInput;
         }
+        catch (const unilag::OutputError& e)
+        {
+            if (rank == 0)
+                std::fprintf(stderr, "unilag: error: the output could not be written: %s\n", e.what());
+            code = unilag::ExitInput;
+        }
         catch (const std::exception& e)
         {
             std::fprintf(stderr, "unilag: internal error on rank %d: %s\n", rank, e.what());

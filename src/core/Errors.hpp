@@ -18,13 +18,22 @@ class InputError : public std::runtime_error
     using std::runtime_error::runtime_error;
 };
 
+/*! A file of the run's output could not be written (a dump, the XDMF collection): the CLI prints the message and
+ *  exits with 2. Every rank throws it alike (the writer shares the outcome), so no rank waits on another. */
+class OutputError : public std::runtime_error
+{
+  public:
+    using std::runtime_error::runtime_error;
+};
+
 //! Exit codes of the CLI.
 enum ExitCode : int
 {
     ExitOk = 0,
     ExitInput = 2,   //!< bad scene or mesh
     ExitCheck = 3,   //!< --check failed
-    ExitUnstable = 4 //!< the run went unstable and was stopped
+    ExitUnstable = 4, //!< the run went unstable and was stopped
+    ExitMaxSteps = 5  //!< time.max_steps stopped the run before its end time
 };
 
 /*! --check's verdict: each failed bound as one line on stderr, or "check passed"; printed only where print is

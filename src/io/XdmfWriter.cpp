@@ -10,6 +10,7 @@
 #include <sstream>
 #include <stdexcept>
 
+#include "core/Errors.hpp"
 #include "core/Mpi.hpp"
 
 namespace unilag::io {
@@ -20,7 +21,7 @@ namespace {
 class H5Handle {
 public:
   H5Handle(hid_t id, herr_t (*closer)(hid_t), const std::string& what) : id_(id), closer_(closer) {
-    if (id_ < 0) throw std::runtime_error("XdmfWriter: " + what + " failed");
+    if (id_ < 0) throw OutputError("XdmfWriter: " + what + " failed");
   }
   ~H5Handle() {
     if (id_ >= 0 && closer_(id_) < 0) std::fprintf(stderr, "XdmfWriter: failed to release an HDF5 id\n");
@@ -31,7 +32,7 @@ public:
   void close(const std::string& what) {
     const hid_t id = id_;
     id_ = -1;
-    if (closer_(id) < 0) throw std::runtime_error("XdmfWriter: closing " + what + " failed");
+    if (closer_(id) < 0) throw OutputError("XdmfWriter: closing " + what + " failed");
   }
 
 private:
@@ -40,7 +41,7 @@ private:
 };
 
 void check(herr_t status, const std::string& what) {
-  if (status < 0) throw std::runtime_error("XdmfWriter: " + what + " failed");
+  if (status < 0) throw OutputError("XdmfWriter: " + what + " failed");
 }
 
 // Names end up in HDF5 paths and XML text: restrict them so neither needs escaping (no ".", "..").
@@ -86,9 +87,9 @@ void writeFileAtomically(const std::string& path, const std::string& text) {
     std::ofstream out(tmp, std::ios::trunc);
     out << text;
     out.flush();
-    if (!out) throw std::runtime_error("XdmfWriter: cannot write " + tmp);
+    if (!out) throw OutputError("XdmfWriter: cannot write " + tmp);
   }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) throw std::runtime_error("XdmfWriter: cannot rename " + tmp + " to " + path);
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) throw OutputError("XdmfWriter: cannot rename " + tmp + " to " + path);
 }
 
 std::string dataItem(long long rows, int cols, const char* numberType, const std::string& h5, const std::string& ds) {
@@ -133,6 +134,9 @@ XdmfWriter::XdmfWriter(MPI_Comm comm, std::string dir, std::string basename, Cel
   if (!isSafeName(base_)) throw std::invalid_argument("XdmfWriter: invalid basename '" + base_ + "'");
   if (MPI_Comm_dup(comm, &comm_) != MPI_SUCCESS) throw std::runtime_error("XdmfWriter: MPI_Comm_dup failed");
   MPI_Comm_rank(comm_, &rank_);
+  // Every HDF5 call's status is checked and becomes one OutputError naming the file; HDF5's own error stack on
+  // stderr would bury that message.
+  H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
 }
 
 XdmfWriter::~XdmfWriter() {
@@ -233,7 +237,7 @@ std::string XdmfWriter::writeStep(int index, double time, const std::vector<doub
   // Share rank 0's outcome so every rank returns or throws alike.
   int failed = xmlError.empty() ? 0 : 1;
   MPI_Bcast(&failed, 1, MPI_INT, 0, comm_);
-  if (failed) throw std::runtime_error(rank_ == 0 ? xmlError : "XdmfWriter: writing XDMF files failed on rank 0");
+  if (failed) throw OutputError(rank_ == 0 ? xmlError : "XdmfWriter: writing XDMF files failed on rank 0");
   return h5Path;
 }
 

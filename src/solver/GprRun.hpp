@@ -249,6 +249,13 @@ int runGpr(const Scene& scene, std::shared_ptr<DistributedMesh> mesh, const RunO
             std::fprintf(stderr, "unilag: error: the run went unstable: %s\n", r.failure.c_str());
         return ExitUnstable;
     }
+    if (r.stepCapped)
+    {
+        if (md.rank == 0)
+            std::fprintf(stderr, "unilag: stopped: time.max_steps = %ld reached at t = %.6g, before the end time %.6g\n",
+                         scene.maxSteps, r.state.t, scene.endTime);
+        return ExitMaxSteps;
+    }
     return options.check ? selfCheck(md, sys, c, x, radii) : ExitOk;
 }
 

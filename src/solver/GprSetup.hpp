@@ -9,6 +9,7 @@
 #include <cmath>
 #include <string>
 
+#include "core/Format.hpp"
 #include "mesh/BoundaryPlanes.hpp"
 #include "solver/GprModel.hpp"
 

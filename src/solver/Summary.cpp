@@ -60,7 +60,7 @@ Summary runSummary(const std::string& file, const std::string& title, const Loop
                    long long nodes, int ranks, int threads)
 {
     Summary s;
-    s.text("scene", file).text("title", title).text("status", r.failure.empty() ? "completed" : "unstable");
+    s.text("scene", file).text("title", title).text("status", !r.failure.empty() ? "unstable" : r.stepCapped ? "max_steps" : "completed");
     s.integer("dimension", dim).integer("cells", cells).integer("nodes", nodes);
     s.integer("ranks", ranks)
         .integer("threads", threads)

@@ -140,6 +140,7 @@ LoopResult runTimeLoop(TimeSystem& system, const TimeControl& c, MPI_Comm comm, 
         }
     }
     r.wallSeconds = std::chrono::duration<double>(Clock::now() - wall0).count();
+    r.stepCapped = r.failure.empty() && s.t < c.endTime * (1.0 - 1e-14);
     if (r.failure.empty())
         system.write(s.dumps++, s.t);
     r.finalTotals = system.totals();

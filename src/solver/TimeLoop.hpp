@@ -68,6 +68,7 @@ struct LoopResult
     double wallSeconds = 0.0; //!< from the first step to the last (without the first and last dumps)
     std::vector<double> initialTotals, finalTotals; //!< TimeSystem::totals() before the first step, after the last
     std::string failure;                            //!< "" if the run completed
+    bool stepCapped = false; //!< stopped by TimeControl::maxSteps before the end time
 };
 
 //! Runs the system from `from` to the end time or the step cap. Collective.

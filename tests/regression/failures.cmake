@@ -113,6 +113,18 @@ add_test(NAME error_cli_output_proc COMMAND bash ${SCRIPTS}/expect_error.sh /pro
          "--output '/proc/unilag_out': cannot create folders in /proc" -- ${UNILAG} run ${SMALL_SEDOV})
 add_test(NAME error_cli_output_file COMMAND bash ${SCRIPTS}/expect_error.sh ${SCENES}/error_gamma.yaml/out
          "--output '.*error_gamma.yaml/out': .*error_gamma.yaml is not a folder" -- ${UNILAG} run ${SMALL_SEDOV})
+# An energy deposit outside the mesh (it would go to the nearest node, wherever that is).
+add_test(NAME error_deposit_outside COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err_deposit
+         "sedov2d.yaml: key 'energy_deposit.position': \\[5, 5\\] lies outside the mesh"
+         -- ${UNILAG} run ${SMALL_SEDOV} --set energy_deposit.position=[5.0,5.0])
+# A dump that cannot be written mid-run (on 1 and 2 ranks: every rank stops alike), and a run stopped by max_steps.
+add_test(NAME error_output_write_failure COMMAND bash ${SCRIPTS}/expect_stop.sh ${WORK}/err_write write_failure
+         -- ${UNILAG} run ${SMALL_SEDOV})
+add_test(NAME error_mpi_output_write_failure COMMAND bash ${SCRIPTS}/expect_stop.sh ${WORK}/err_mpi_write
+         write_failure -- ${MPI_RUN} 2 ${UNILAG} run ${SMALL_SEDOV})
+set_tests_properties(error_mpi_output_write_failure PROPERTIES PROCESSORS 2)
+add_test(NAME stop_max_steps COMMAND bash ${SCRIPTS}/expect_stop.sh ${WORK}/max_steps max_steps
+         -- ${UNILAG} run ${SMALL_SEDOV} --set time.max_steps=5)
 # Under mpirun a bad option is reported by rank 0 alone (expect_error.sh asserts exactly one error line).
 add_test(NAME error_mpi_cli_unknown_option COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err_mpi_cli
          "unknown option '--chek'" -- ${MPI_RUN} 2 ${UNILAG} run ${SMALL_SEDOV} --chek)
@@ -121,8 +133,10 @@ set_tests_properties(error_boundary_unknown error_boundary_missing error_region_
                      error_mpi_boundary_unknown error_exact_missing error_exact_row error_exact_order error_exact_columns
                      error_cli_unknown_option error_cli_no_scene error_cli_unknown_command error_cli_set_no_value
                      error_cli_set_unknown_key error_cli_output_proc error_cli_output_file error_mpi_cli_unknown_option
+                     error_deposit_outside error_output_write_failure stop_max_steps
                      PROPERTIES LABELS regression)
-set_tests_properties(error_mpi_boundary_unknown error_mpi_cli_unknown_option PROPERTIES LABELS "regression;mpi")
+set_tests_properties(error_mpi_boundary_unknown error_mpi_cli_unknown_option error_mpi_output_write_failure
+                     PROPERTIES LABELS "regression;mpi")
 
 # A re-run into the same folder: a long run (4 dumps) then a short one (2 dumps). The short run removes the long
 # run's outputs by name and nothing else; see expect_rerun_clears.sh for each assertion.
