@@ -8,6 +8,20 @@
 namespace unilag
 {
 
+/*! Squared sound speed of an updated cell (density rhoNew; E, v, G, J as stored), the admissibility test of every
+ *  update: negative for an inadmissible state, and for NaN. A cold cell's E - kinetic is zero only up to round-off:
+ *  eps in [-epsRoundoff, 0) counts as 0 (cold-gas.md); a solid's c^2 < 0 from its EOS is still refused. */
+template <int D, class P>
+KOKKOS_INLINE_FUNCTION double updatedSound2(const Material& m, double rhoNew, double E, const Vec<D>& v,
+                                            const gpr::Sym3& G, const Vec<D>& J)
+{
+    double eps = internalEnergy<D, P>(m, E, v, G, J);
+    if (eps < 0.0 && eps >= -m.epsRoundoff)
+        eps = 0.0;
+    const double c2 = gpr::soundSpeed2(m.eos, rhoNew, gpr::pressure(m.eos, rhoNew, eps));
+    return c2 == c2 ? c2 : -Kokkos::reduction_identity<double>::min(); // NaN: report as the worst possible
+}
+
 /*! \brief Conservative update of owned cells over dt from rates (forces: m dv/dt, m dE/dt; heat: m dE/dt, m dJ/dt),
  *  writing stateNew. Returns the validity extrema.
  *   - v^{n+1} = v^n + dt/m force, E^{n+1} = E^n + dt/m power (+ dt/m heat E) (2b, 2c);
@@ -91,13 +105,9 @@ UpdateCheck applyUpdate(const MeshView<D>& mesh, const ConstField& state, const 
         const double ratio = sNew.volume / volume(i);
         // Admissible state: a non-negative squared sound speed (for an ideal gas: a non-negative internal energy;
         // a cold gas, p = 0, has c0 = 0 and the nodal solver's shock impedance, nodalImpedance).
-        // A cold cell's E - kinetic is zero only up to round-off: eps in [-epsRoundoff, 0) counts as 0 (cold-gas.md).
-        double eps = internalEnergy<D, P>(m, E, v, G, J);
-        if (eps < 0.0 && eps >= -m.epsRoundoff)
-            eps = 0.0;
-        double c2 = gpr::soundSpeed2(m.eos, rhoNew, gpr::pressure(m.eos, rhoNew, eps));
-        if (!(c2 == c2) || !(omega == omega))
-            c2 = -Kokkos::reduction_identity<double>::min(); // NaN: report as the worst possible
+        double c2 = updatedSound2<D, P>(m, rhoNew, E, v, G, J);
+        if (!(omega == omega))
+            c2 = -Kokkos::reduction_identity<double>::min();
         ext[0] = Kokkos::Experimental::fmin(ext[0], ratio);
         ext[1] = Kokkos::Experimental::fmin(ext[1], c2);
         ext[2] = Kokkos::Experimental::fmin(ext[2], -Kokkos::Experimental::fabs(mass(i) * omegaGcl - sNew.volume) /
@@ -162,6 +172,41 @@ UpdateCheck updateCellsFromStages(const MeshView<D>& mesh, const ConstField& sta
     heat.offset = RateLayout<D, P>::heat;
     return applyUpdate<D, P>(mesh, state, aux, geom, mass, cellMaterial, materials, x, xNew, vnode, dt, stateNew,
                              StoredForces<D, K>{rates}, heat, geomNew);
+}
+
+/*! \brief The a posteriori first-order fallback (docs/gpr-model.md 2.5): marks in flags (owned cells, column 0) every
+ *  cell that the update into stateNew / geomNew left inadmissible (inverted, or a negative squared sound speed, the
+ *  test of applyUpdate) and that is not marked yet. Returns how many it marked on this rank. */
+template <int D, class P>
+LO flagInadmissible(const MeshView<D>& mesh, const ConstField& stateNew, const CellGeometry& geomNew,
+                    const View<const int*>& cellMaterial, const View<const Material*>& materials, const Field& flags)
+{
+    using S = StateLayout<D, P>;
+    auto volume = geomNew.volume;
+    LO marked = 0;
+    auto mark = KOKKOS_LAMBDA(const LO i, LO& count)
+    {
+        if (flags(i, 0) != 0.0)
+            return;
+        Vec<D> v, J = Vec<D>::zero();
+        for (int d = 0; d < D; ++d)
+            v[d] = stateNew(i, S::vel + d);
+        gpr::Sym3 G = gpr::identity(1.0);
+        if constexpr (P::strain)
+            G = loadSym3(stateNew, i, S::G);
+        if constexpr (P::heat)
+            for (int d = 0; d < D; ++d)
+                J[d] = stateNew(i, S::J + d);
+        const double rho = 1.0 / stateNew(i, S::omega);
+        const Material& m = materials(cellMaterial(i));
+        if (volume(i) <= 0.0 || updatedSound2<D, P>(m, rho, stateNew(i, S::energy), v, G, J) < 0.0)
+        {
+            flags(i, 0) = 1.0;
+            ++count;
+        }
+    };
+    Kokkos::parallel_reduce("unilag::gpr::flag_inadmissible", range(mesh.nOwnedCells), mark, marked);
+    return marked;
 }
 
 } // namespace unilag

@@ -375,6 +375,21 @@ void limitedGradientsOf(const MeshView<D>& mesh, const Q& quantities, const Cell
     Kokkos::parallel_for("unilag::recon::limited_gradients", range(mesh.nOwnedCells), gradient);
 }
 
+/*! The a posteriori first-order fallback (docs/gpr-model.md 2.5): the owned cells marked in flags (column 0) lose
+ *  their gradients, so that their corner values are their cell values. First order keeps a cell's own work on the
+ *  nodes dissipative, sum_r (v_r - v_i) . M (v_r - v_i) >= 0, which the reconstructed corner velocities do not. */
+inline void dropFlaggedGradients(const Field& grad, const ConstField& flags, LO nOwnedCells)
+{
+    const int ncomp = int(grad.extent(1));
+    auto drop = KOKKOS_LAMBDA(const LO i)
+    {
+        if (flags(i, 0) != 0.0)
+            for (int c = 0; c < ncomp; ++c)
+                grad(i, c) = 0.0;
+    };
+    Kokkos::parallel_for("unilag::recon::drop_flagged_gradients", range(nOwnedCells), drop);
+}
+
 /*! \brief Limited gradients of velocity, pressure and (strain variants) the shear stress `stress` into grad (cells x
  *  ReconLayout::ncomp): limitedGradientsOf with MechanicalQuantities (slip walls and symmetry planes mirror the cell,
  *  an imposed boundary pressure is boundary data). */

@@ -135,6 +135,7 @@ GprModel<D, P>::GprModel(const Scene& scene_, std::shared_ptr<DistributedMesh> m
         fields.add("x_mid", Entity::Node, D, S_);
         fields.add("gradients", Entity::Cell, ReconLayout<D, P>::ncomp, S_);
         fields.add("gradients_n", Entity::Cell, ReconLayout<D, P>::ncomp, S_);
+        fields.add("first_order", Entity::Cell, 1, S_); // the step's a posteriori fallback cells (1), else 0
         geomMid = CellGeometry(dm.nCells, D);
         auxMid = Field("unilag::auxMid", dm.nCells, Aux::ncomp<P>());
         if constexpr (P::strain)

@@ -91,6 +91,7 @@ template <int D, class P> class GprOperator
             ScopedTimer timer(md_.timers, Phase::Reconstruction);
             limitedGradients<D, P>(md_.m, md_.read("state"), md_.aux, stressIterate(), md_.geom, md_.read("x"),
                                    md_.write("gradients_n"), md_.bc, md_.limiter);
+            dropFlaggedGradients(md_.write("gradients_n"), md_.read("first_order"), md_.m.nOwnedCells);
         }
         halo("gradients_n");
         recStart_ = Reconstruction<D>{md_.read("gradients_n"), md_.read("x"), md_.geom.centroid};
@@ -115,6 +116,22 @@ template <int D, class P> class GprOperator
         ScopedTimer timer(md_.timers, Phase::TimeStep);
         return mpi::allMin(md_.comm, unilag::stableTimeStep<D>(md_.m, md_.aux, md_.geom, md_.read("v_node"),
                                                                md_.scene.cfl, md_.scene.maxVolumeChange));
+    }
+
+    /*! Order 2, the a posteriori first-order fallback (docs/gpr-model.md 2.5): a new step starts with no cell
+     *  marked. */
+    void clearFallback() { Kokkos::deep_copy(md_.write("first_order"), 0.0); }
+
+    /*! Marks the cells that the last update left inadmissible (state_new, geomNew) for first order in the rest of
+     *  this step, with their ghosts; returns how many were marked, over all ranks. Collective. */
+    long markFallback()
+    {
+        const LO local = flagInadmissible<D, P>(md_.m, md_.read("state_new"), md_.geomNew, md_.cellMaterial,
+                                                md_.materials, md_.write("first_order"));
+        halo("first_order");
+        double count[1] = {double(local)};
+        mpi::allSum(md_.comm, count);
+        return long(count[0]);
     }
 
     void halo(const std::string& field)

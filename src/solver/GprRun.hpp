@@ -170,6 +170,7 @@ void writeSummary(const GprModel<D, P>& md, const GprSystem<D, P>& sys, const Ru
                          {"plastic", P::plastic ? "true" : "false"},
                          {"heat", P::heat ? "true" : "false"}});
     s.object("picard_iterations", {{"mean", jsonNumber(picardMean)}, {"max", std::to_string(sys.picardMax())}});
+    s.integer("first_order_fallback_cells", sys.fallbackCells());
     s.number("t_final", r.state.t).number("wall_seconds", r.wallSeconds).number("cell_steps_per_second", cellSteps);
     s.number("mass_relative_change", c.mass).number("momentum_relative_change", c.momentum);
     s.number("energy_relative_change", c.energy).number("max_gcl_defect", sys.maxGclDefect());

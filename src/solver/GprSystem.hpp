@@ -47,7 +47,10 @@ template <int D, class P> class GprSystem : public TimeSystem
         if constexpr (P::strain)
             op_.startPicard(step);
         if (md_.order2)
+        {
+            op_.clearFallback();
             op_.reconstructStart();
+        }
         op_.solveNodes();
         if constexpr (P::heat)
             op_.heatFluxes();
@@ -61,20 +64,27 @@ template <int D, class P> class GprSystem : public TimeSystem
             md_.fields.copy("v_node", "v_node0"); // v^0 and sigma^n do not depend on dt
     }
 
+    /*! One attempt at [t, t + dt]. Order 2: where the update leaves cells inadmissible (a negative internal energy,
+     *  an inverted cell), those cells fall back to first order for the rest of the step, the rates at t^n are
+     *  recomputed and the step is tried again at the same dt, up to maxFallbackRounds times, before the time loop
+     *  halves dt (docs/gpr-model.md 2.5, "A posteriori fallback"). */
     bool attemptStep(double t, double dt, int attempt, int& iterations) override
     {
-        stage_.failure.clear();
-        if (attempt > 0 && md_.fields.has("v_node0"))
+        bool ok = integrate(t, dt, attempt > 0);
+        for (int round = 0; !ok && md_.order2 && stage_.failure.empty() && round < maxFallbackRounds; ++round)
         {
-            md_.fields.copy("v_node0", "v_node");
+            const long marked = op_.markFallback();
+            if (marked == 0)
+                break;
+            fallbackCells_ += marked;
             op_.setBoundaryTime(t);
-        }
-        if constexpr (P::strain)
-            if (attempt > 0)
+            if constexpr (P::strain)
                 md_.fields.copy("sigma0", "sigma");
-        const bool ok = ars222_         ? ars_.step(t, dt, stage_)
-                        : md_.order2 ? midpoint_.step(t, dt, stage_)
-                                     : euler_.step(t, dt, stage_);
+            op_.reconstructStart();
+            op_.solveNodes();
+            md_.fields.copy("v_node", "v_node0");
+            ok = integrate(t, dt, false);
+        }
         iterations = stage_.iterations;
         return ok;
     }
@@ -119,6 +129,8 @@ template <int D, class P> class GprSystem : public TimeSystem
     }
 
     long picardTotal() const { return picardTotal_; }
+    //! Cells marked by the a posteriori first-order fallback, summed over the steps (order 2).
+    long fallbackCells() const { return fallbackCells_; }
     int picardMax() const { return picardMax_; }
     double maxGclDefect() const { return maxGcl_; }
     //! Boundary impulse and work, wall work, boundary heat and the worst node imbalance of the accepted steps.
@@ -127,6 +139,21 @@ template <int D, class P> class GprSystem : public TimeSystem
     double work() const { return balance_.work; }
 
   private:
+    //! The integrator's step from the rates at t^n; restore: a retry, which starts from v^0 and the first stress.
+    bool integrate(double t, double dt, bool restore)
+    {
+        stage_.failure.clear();
+        if (restore && md_.fields.has("v_node0"))
+        {
+            md_.fields.copy("v_node0", "v_node");
+            op_.setBoundaryTime(t);
+        }
+        if constexpr (P::strain)
+            if (restore)
+                md_.fields.copy("sigma0", "sigma");
+        return ars222_ ? ars_.step(t, dt, stage_) : md_.order2 ? midpoint_.step(t, dt, stage_) : euler_.step(t, dt, stage_);
+    }
+
     GprModel<D, P>& md_;
     GprOperator<D, P> op_;
     ForwardEuler<D, P> euler_;
@@ -135,7 +162,9 @@ template <int D, class P> class GprSystem : public TimeSystem
     bool ars222_; //!< scheme.integrator: ars222 (order 2)
     std::unique_ptr<io::XdmfWriter> writer_;
     StageResult stage_;
+    static constexpr int maxFallbackRounds = 4;
     long picardTotal_ = 0;
+    long fallbackCells_ = 0;
     int picardMax_ = 0;
     double maxGcl_ = 0.0;
     BoundaryBalance<D> balance_;
