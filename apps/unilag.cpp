@@ -34,18 +34,22 @@ options:
                      balance at every node and no work by walls, to round-off, and the scene's error bounds;
                      tube: every onset speed converged (a twice finer discretisation agrees within 1e-3);
                      exit 3 with the failing figure otherwise
+  --restart FILE     continuum: continue the run from a checkpoint (output.checkpoint_interval writes
+                     <DIR>/checkpoint.h5) on any number of ranks; the output series goes on in DIR
   --threads N        Kokkos threads per rank (default: OMP_NUM_THREADS)
   --quiet            no progress line
 
 output: <DIR>/unilag.xmf (open in ParaView), unilag_NNNNNN.h5, scene.yaml (resolved scene), summary.json,
         steps.csv. Once the input is validated, a run removes these files of an earlier run from DIR (by name:
         unilag.xmf, unilag_NNNNNN.h5/.xmf, summary.json, steps.csv, scene.yaml) and nothing else.
-exit codes: 0 ok, 2 bad input, 3 check failed, 4 the run went unstable (with a diagnosis).
+exit codes: 0 ok, 2 bad input (or output that cannot be written), 3 check failed, 4 the run went unstable
+            (with a diagnosis), 5 stopped by time.max_steps before the end time, 6 stopped by SIGTERM / SIGINT
+            (after writing <DIR>/checkpoint.h5).
 )";
 
 struct Args
 {
-    std::string scene, output;
+    std::string scene, output, restart;
     std::vector<std::string> sets;
     bool check = false, quiet = false, help = false;
     int threads = -1;
@@ -89,6 +93,8 @@ Args parse(int argc, char** argv)
             a.sets.push_back(s.substr(6));
         else if (s == "--output")
             a.output = value("--output");
+        else if (s == "--restart")
+            a.restart = value("--restart");
         else if (s == "--check")
             a.check = true;
         else if (s == "--quiet")
@@ -130,6 +136,7 @@ int runContinuum(const Args& args, const Teuchos::RCP<const Teuchos::Comm<int>>&
     }
     unilag::RunOptions options;
     options.check = args.check;
+    options.restart = args.restart;
     options.progress = !args.quiet;
     options.threads = unilag::ExecSpace::concurrency();
     return unilag::runScene(scene, options, comm);
@@ -165,6 +172,8 @@ int main(int argc, char** argv)
         auto comm = Tpetra::getDefaultComm();
         try
         {
+            if (unilag::tube::isTubeScene(args.scene) && !args.restart.empty())
+                throw unilag::InputError(args.scene + ": --restart: tube scenes have no checkpoints");
             if (unilag::tube::isTubeScene(args.scene))
                 code = unilag::runTube(args.scene, args.sets, args.output, args.check, MPI_COMM_WORLD);
             else

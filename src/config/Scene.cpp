@@ -334,6 +334,7 @@ void readOutput(ConfigNode& root, Scene& s)
         o.fail("directory", "must not be empty");
     s.outputSource = s.file + ": key 'output.directory'";
     s.outputInterval = o.nonNegative("interval", 0.0);
+    s.checkpointInterval = o.nonNegative("checkpoint_interval", 0.0);
     s.writeOutput = o.boolean("enabled", true);
     o.rejectUnknown();
 }

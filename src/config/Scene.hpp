@@ -153,6 +153,7 @@ struct Scene
     std::string outputDirectory = "output";
     std::string outputSource = "output folder"; //!< where outputDirectory came from, for messages ("--output", a key)
     double outputInterval = 0.0; //!< 0: first and last state only
+    double checkpointInterval = 0.0; //!< simulated time between checkpoints (0: none)
     bool writeOutput = true;
 
     ExactSolution exactSolution = ExactSolution::None;

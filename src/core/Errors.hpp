@@ -33,7 +33,8 @@ enum ExitCode : int
     ExitInput = 2,   //!< bad scene or mesh
     ExitCheck = 3,   //!< --check failed
     ExitUnstable = 4, //!< the run went unstable and was stopped
-    ExitMaxSteps = 5  //!< time.max_steps stopped the run before its end time
+    ExitMaxSteps = 5, //!< time.max_steps stopped the run before its end time
+    ExitInterrupted = 6 //!< SIGTERM or SIGINT stopped the run, after a checkpoint
 };
 
 /*! --check's verdict: each failed bound as one line on stderr, or "check passed"; printed only where print is

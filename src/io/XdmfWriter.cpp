@@ -180,6 +180,12 @@ std::string XdmfWriter::stepName(int index) const {
 
 std::string XdmfWriter::collectionPath() const { return dir_ + "/" + base_ + ".xmf"; }
 
+void XdmfWriter::continueSeries(int dumps) {
+  dumps_.clear();
+  if (rank_ == 0)
+    for (int i = 0; i < dumps; ++i) dumps_.emplace_back(i, 0.0);  // the collection lists indices; times are in the steps
+}
+
 std::vector<XdmfWriter::Dataset> XdmfWriter::datasetsOf(const std::vector<CellField>& cellFields,
                                                          const std::vector<NodeField>& nodeFields) {
   std::vector<Dataset> all;

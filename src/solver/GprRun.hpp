@@ -226,20 +226,27 @@ int runGpr(const Scene& scene, std::shared_ptr<DistributedMesh> mesh, const RunO
             std::fprintf(stderr, "unilag: error: %s\n", error.c_str());
         return ExitInput;
     }
+    GprSystem<D, P> sys(md, options.check);
+    const bool restart = !options.restart.empty();
+    LoopState from; // a new run starts at t = 0; a restart where its checkpoint stopped (InputError if it cannot)
+    if (restart)
+        from = sys.restore(options.restart);
     // Only now, with the input fully validated, does anything get written.
     if (md.rank == 0)
     {
         std::filesystem::create_directories(scene.outputDirectory);
-        // the previous run's own outputs (by name; nothing else), so that no dump of a longer run survives
-        io::removeRunOutputs(scene.outputDirectory);
+        // the previous run's own outputs (by name; nothing else), so that no dump of a longer run survives; a
+        // restart continues them
+        if (!restart)
+            io::removeRunOutputs(scene.outputDirectory);
         writeScene(scene, (std::filesystem::path(scene.outputDirectory) / "scene.yaml").string());
     }
     MPI_Barrier(md.comm);
-    GprSystem<D, P> sys(md, options.check);
     if (scene.writeOutput)
-        sys.openOutput(scene.outputDirectory);
-    sys.start();
-    const LoopResult r = runTimeLoop(sys, timeControl(scene, options), md.comm);
+        sys.openOutput(scene.outputDirectory, from.dumps);
+    if (!restart)
+        sys.start();
+    const LoopResult r = runTimeLoop(sys, timeControl(scene, options), md.comm, from);
     const Conservation c = conservation<D>(r.initialTotals, r.finalTotals, sys.balance());
     const ExactErrors x = r.failure.empty() ? exactErrors(md, r.state.t) : ExactErrors{};
     const std::vector<double> radii = boundaryRadii(md);
@@ -249,6 +256,13 @@ int runGpr(const Scene& scene, std::shared_ptr<DistributedMesh> mesh, const RunO
         if (md.rank == 0)
             std::fprintf(stderr, "unilag: error: the run went unstable: %s\n", r.failure.c_str());
         return ExitUnstable;
+    }
+    if (r.signal != 0)
+    {
+        if (md.rank == 0)
+            std::fprintf(stderr, "unilag: stopped by signal %d at t = %.6g; checkpoint %s (continue with --restart)\n",
+                         r.signal, r.state.t, sys.checkpointPath().c_str());
+        return ExitInterrupted;
     }
     if (r.stepCapped)
     {

@@ -5,11 +5,13 @@
  */
 #pragma once
 
+#include <filesystem>
 #include <memory>
 #include <string>
 #include <vector>
 
 #include "core/Format.hpp"
+#include "solver/GprCheckpoint.hpp"
 #include "solver/GprDiagnostics.hpp"
 #include "solver/GprOutput.hpp"
 #include "solver/Integrators.hpp"
@@ -30,7 +32,12 @@ template <int D, class P> class GprSystem : public TimeSystem
         op_.selectBalanceNodes(checkEveryNode);
     }
 
-    void openOutput(const std::string& dir) { writer_ = makeWriter(md_, dir); }
+    //! dumps: the dumps a restarted run's series already holds (0 for a new run).
+    void openOutput(const std::string& dir, int dumps = 0)
+    {
+        writer_ = makeWriter(md_, dir);
+        writer_->continueSeries(dumps);
+    }
     const io::XdmfWriter* writer() const { return writer_.get(); }
 
     //! Geometry and EOS of the initial state. Collective.
@@ -109,7 +116,7 @@ template <int D, class P> class GprSystem : public TimeSystem
         // ARS(2,2,2): the next step's impedances lag stage 1's node velocities (a nodal solution), not the combined
         // ones: their extrapolation (weight beta - 1 < 0 on v0) made z at t^n differ from stage 1's at any dt by the
         // 3D Sedov deposit (R0 = 1300 R1), and the final row, weighing R0 by beta - 1, left a negative energy.
-        op_.advance(ars222_ ? "ars_v1" : "v_node");
+        op_.advance(lagged());
     }
 
     std::string collapse(double t, double dt, long step) override { return unilag::collapse(md_, t, dt, step); }
@@ -128,6 +135,77 @@ template <int D, class P> class GprSystem : public TimeSystem
         return std::vector<double>(t, t + D + 3);
     }
 
+    //! <output>/checkpoint.h5 (written to a temporary name, then renamed). Collective.
+    void checkpoint(const LoopState& loop) override
+    {
+        io::CheckpointWriter out(md_.comm, checkpointPath());
+        for (const auto& [key, value] : checkpointIdentity(md_))
+            out.text(key, value);
+        const auto& dm = *md_.mesh;
+        for (const auto& [name, node] : checkpointFields(md_, lagged()))
+            out.table((node ? "node." : "cell.") + name, node ? dm.nGlobalNodes : dm.nGlobalCells,
+                      ownedRows(md_, name, node));
+        const double loopNumbers[] = {loop.t,     loop.dtPrev, loop.nextOutput, double(loop.steps), double(loop.dumps),
+                                      double(loop.retries), loop.nextCheckpoint};
+        out.numbers("loop", std::vector<double>(std::begin(loopNumbers), std::end(loopNumbers)));
+        out.numbers("initial_totals", loop.initialTotals);
+        std::vector<double> run = {double(picardTotal_), double(picardMax_), maxGcl_, double(fallbackCells_),
+                                   balance_.work,        balance_.passiveWork, balance_.heat, balance_.maxImbalance,
+                                   double(balance_.worstNode), balance_.worstTime};
+        run.insert(run.end(), balance_.impulse, balance_.impulse + D);
+        out.numbers("run", run);
+        out.commit();
+    }
+
+    /*! Continues from a checkpoint: the persistent fields and lagged node velocities (owned rows by global id,
+     *  then their ghosts), the geometry and EOS they give, the running totals; returns the time loop's state.
+     *  InputError (exit 2) if the file is not a checkpoint of this scene, mesh and scheme. Collective. */
+    LoopState restore(const std::string& path)
+    {
+        io::CheckpointReader in(md_.comm, path);
+        for (const auto& [key, value] : checkpointIdentity(md_))
+            if (in.text(key) != value)
+                throw InputError("--restart '" + path + "': a checkpoint of another run (" + key + " '" +
+                                 in.text(key) + "', this scene '" + value + "')");
+        if (!md_.fields.has(lagged())) // ars_v1 is made by the first step's stage 1
+            md_.fields.add(lagged(), Entity::Node, D, Lifetime::Scratch);
+        for (const auto& [name, node] : checkpointFields(md_, lagged()))
+            restoreRows(md_, in, name, node);
+        op_.refreshGeometry();
+        op_.computeAux(lagged());
+        const std::vector<double>& l = in.numbers("loop");
+        const std::vector<double>& run = in.numbers("run");
+        if (l.size() != 7 || run.size() != 10 + D)
+            throw InputError("--restart '" + path + "': the loop's state has the wrong length");
+        LoopState s;
+        s.t = l[0];
+        s.dtPrev = l[1];
+        s.nextOutput = l[2];
+        s.steps = long(l[3]);
+        s.dumps = int(l[4]);
+        s.retries = int(l[5]);
+        s.nextCheckpoint = l[6];
+        s.initialTotals = in.numbers("initial_totals");
+        picardTotal_ = long(run[0]);
+        picardMax_ = int(run[1]);
+        maxGcl_ = run[2];
+        fallbackCells_ = long(run[3]);
+        balance_.work = run[4];
+        balance_.passiveWork = run[5];
+        balance_.heat = run[6];
+        balance_.maxImbalance = run[7];
+        balance_.worstNode = GO(run[8]);
+        balance_.worstTime = run[9];
+        for (int d = 0; d < D; ++d)
+            balance_.impulse[d] = run[10 + d];
+        return s;
+    }
+
+    std::string checkpointPath() const
+    {
+        return (std::filesystem::path(md_.scene.outputDirectory) / "checkpoint.h5").string();
+    }
+
     long picardTotal() const { return picardTotal_; }
     //! Cells marked by the a posteriori first-order fallback, summed over the steps (order 2).
     long fallbackCells() const { return fallbackCells_; }
@@ -139,6 +217,9 @@ template <int D, class P> class GprSystem : public TimeSystem
     double work() const { return balance_.work; }
 
   private:
+    //! The node velocities the next step's impedance lags (GprSystem::acceptStep).
+    const char* lagged() const { return ars222_ ? "ars_v1" : "v_node"; }
+
     //! The integrator's step from the rates at t^n; restore: a retry, which starts from v^0 and the first stress.
     bool integrate(double t, double dt, bool restore)
     {

@@ -16,6 +16,7 @@ struct RunOptions
     bool check = false; //!< assert conservation and the scene's error bounds
     int threads = 1;    //!< Kokkos threads (reported)
     bool progress = true;
+    std::string restart; //!< checkpoint to continue from ("" for a new run)
 };
 
 //! The time loop's settings from a continuum scene.
@@ -30,6 +31,8 @@ inline TimeControl timeControl(const Scene& scene, const RunOptions& options)
     c.maxRetries = scene.maxRetries;
     c.progress = options.progress;
     c.stepsCsv = (std::filesystem::path(scene.outputDirectory) / "steps.csv").string();
+    c.checkpointInterval = scene.checkpointInterval;
+    c.checkpointOnSignal = true;
     return c;
 }
 

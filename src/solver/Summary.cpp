@@ -60,7 +60,10 @@ Summary runSummary(const std::string& file, const std::string& title, const Loop
                    long long nodes, int ranks, int threads)
 {
     Summary s;
-    s.text("scene", file).text("title", title).text("status", !r.failure.empty() ? "unstable" : r.stepCapped ? "max_steps" : "completed");
+    s.text("scene", file).text("title", title).text("status", !r.failure.empty() ? "unstable"
+                                : r.signal != 0 ? "interrupted"
+                                : r.stepCapped  ? "max_steps"
+                                                : "completed");
     s.integer("dimension", dim).integer("cells", cells).integer("nodes", nodes);
     s.integer("ranks", ranks)
         .integer("threads", threads)

@@ -6,6 +6,7 @@
 #include <fstream>
 #include <iomanip>
 #include <memory>
+#include <csignal>
 #include <unistd.h>
 
 #include "core/Format.hpp"
@@ -16,6 +17,43 @@ namespace
 {
 
 using Clock = std::chrono::steady_clock;
+
+volatile std::sig_atomic_t stopSignal = 0;
+extern "C" void requestStop(int signal) { stopSignal = signal; }
+
+/*! While alive, SIGTERM and SIGINT ask the loop to stop at the end of the current step (with a checkpoint) instead
+ *  of killing the process; the previous handlers come back after. */
+class StopOnSignal
+{
+  public:
+    explicit StopOnSignal(bool enabled) : enabled_(enabled)
+    {
+        if (!enabled_)
+            return;
+        stopSignal = 0;
+        term_ = std::signal(SIGTERM, requestStop);
+        int_ = std::signal(SIGINT, requestStop);
+    }
+    ~StopOnSignal()
+    {
+        if (!enabled_)
+            return;
+        std::signal(SIGTERM, term_);
+        std::signal(SIGINT, int_);
+    }
+    //! The signal any rank has received (0: none). Collective.
+    static int received(MPI_Comm comm)
+    {
+        int s = int(stopSignal);
+        MPI_Allreduce(MPI_IN_PLACE, &s, 1, MPI_INT, MPI_MAX, comm);
+        return s;
+    }
+
+  private:
+    bool enabled_;
+    void (*term_)(int) = SIG_DFL;
+    void (*int_)(int) = SIG_DFL;
+};
 
 //! The progress line: on a terminal one updating line, otherwise a line every 5 seconds (rank 0).
 class Progress
@@ -89,20 +127,39 @@ LoopResult runTimeLoop(TimeSystem& system, const TimeControl& c, MPI_Comm comm, 
         s.dtPrev = c.initialTimeStep;
     if (s.nextOutput < 0.0)
         s.nextOutput = c.outputInterval > 0 ? c.outputInterval : c.endTime;
-    r.initialTotals = system.totals();
+    if (s.initialTotals.empty())
+        s.initialTotals = system.totals();
+    r.initialTotals = s.initialTotals;
+    if (s.nextCheckpoint < 0.0)
+        s.nextCheckpoint = c.checkpointInterval;
     if (s.dumps == 0)
         system.write(s.dumps++, s.t);
     std::unique_ptr<std::ofstream> steps;
     if (rank == 0 && !c.stepsCsv.empty())
     {
+        // a restarted run goes on with the rows of the run it continues, up to its checkpoint's step
+        std::vector<std::string> kept = {"step,t,dt,picard_iterations,dt_halvings"};
+        std::ifstream old(s.steps > 0 ? c.stepsCsv : std::string());
+        for (std::string line; std::getline(old, line) && long(kept.size()) <= s.steps;)
+            if (line.rfind("step,", 0) != 0)
+                kept.push_back(line);
         steps = std::make_unique<std::ofstream>(c.stepsCsv);
-        *steps << "step,t,dt,picard_iterations,dt_halvings\n";
+        for (const std::string& line : kept)
+            *steps << line << '\n';
     }
     const auto wall0 = Clock::now();
     {
         Progress progress(c.progress && rank == 0, c.endTime);
+        StopOnSignal stop(c.checkpointOnSignal);
         while (s.t < c.endTime * (1.0 - 1e-14) && s.steps < c.maxSteps)
         {
+            if (c.checkpointOnSignal && (r.signal = StopOnSignal::received(comm)) != 0)
+            {
+                if (steps)
+                    steps->flush();
+                system.checkpoint(s);
+                break;
+            }
             double dt = chooseStep(system, c, s.t, s.dtPrev, s.steps, s.nextOutput, r.failure);
             if (!r.failure.empty())
                 break;
@@ -136,11 +193,19 @@ LoopResult runTimeLoop(TimeSystem& system, const TimeControl& c, MPI_Comm comm, 
                 system.write(s.dumps++, s.t);
                 s.nextOutput = c.outputInterval > 0 ? s.nextOutput + c.outputInterval : c.endTime;
             }
+            if (c.checkpointInterval > 0.0 && s.t >= s.nextCheckpoint * (1.0 - 1e-12) &&
+                s.t < c.endTime * (1.0 - 1e-14))
+            {
+                s.nextCheckpoint += c.checkpointInterval;
+                if (steps)
+                    steps->flush(); // the checkpoint's steps.csv is complete up to its step
+                system.checkpoint(s);
+            }
             progress.report(s.steps, s.t, dt);
         }
     }
     r.wallSeconds = std::chrono::duration<double>(Clock::now() - wall0).count();
-    r.stepCapped = r.failure.empty() && s.t < c.endTime * (1.0 - 1e-14);
+    r.stepCapped = r.failure.empty() && r.signal == 0 && s.t < c.endTime * (1.0 - 1e-14);
     if (r.failure.empty())
         system.write(s.dumps++, s.t);
     r.finalTotals = system.totals();

@@ -36,6 +36,8 @@ class TimeSystem
     virtual void write(int index, double t) = 0;
     //! The conserved totals of the state (and whatever their check needs), the same on every rank.
     virtual std::vector<double> totals() = 0;
+    //! Writes a checkpoint of the persistent state with the loop's state (a system without checkpoints ignores it).
+    virtual void checkpoint(const struct LoopState& /*loop*/) {}
 };
 
 struct TimeControl
@@ -48,6 +50,8 @@ struct TimeControl
     int maxRetries = 8; //!< halvings of a rejected step before the run stops
     bool progress = true;
     std::string stepsCsv; //!< per accepted step: t, dt, iterations, halvings (rank 0; "" for none)
+    double checkpointInterval = 0.0; //!< simulated time between TimeSystem::checkpoint calls (0: none)
+    bool checkpointOnSignal = false; //!< SIGTERM / SIGINT: checkpoint at the end of the step and stop
 };
 
 /*! Where the loop is: all it needs to go on from here (a checkpoint keeps it with the system's persistent fields).
@@ -60,6 +64,8 @@ struct LoopState
     long steps = 0;
     int dumps = 0;   //!< dumps written so far (the next dump's index)
     int retries = 0; //!< halvings of rejected steps so far
+    double nextCheckpoint = -1.0;       //!< the next checkpoint time (< 0: the first one after t = 0)
+    std::vector<double> initialTotals; //!< TimeSystem::totals() at t = 0 (empty: not taken yet)
 };
 
 struct LoopResult
@@ -69,6 +75,7 @@ struct LoopResult
     std::vector<double> initialTotals, finalTotals; //!< TimeSystem::totals() before the first step, after the last
     std::string failure;                            //!< "" if the run completed
     bool stepCapped = false; //!< stopped by TimeControl::maxSteps before the end time
+    int signal = 0;          //!< stopped (with a checkpoint) by this signal
 };
 
 //! Runs the system from `from` to the end time or the step cap. Collective.

@@ -42,6 +42,7 @@ class FieldSet
     //! Adds a field of ncomp columns on the local (owned + ghost) entities; returns it.
     MV& add(const std::string& name, Entity entity, int ncomp, Lifetime lifetime);
     bool has(const std::string& name) const { return fields_.count(name) > 0; }
+    Entity entity(const std::string& name) const { return entry(name).entity; }
     MV& operator[](const std::string& name) const { return *entry(name).mv; }
     //! Exchanges the storage of two fields of the same shape (the new state becomes the state).
     void swap(const std::string& a, const std::string& b);

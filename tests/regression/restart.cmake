@@ -1,0 +1,51 @@
+# Checkpoint and restart (issue 14 item 2, README "Checkpoint and restart"; tests/scripts/expect_restart.sh): a run
+# checkpointed at mid-time (output.checkpoint_interval, then stopped by time.max_steps; or stopped by SIGTERM) and
+# restarted, on the same number of ranks or another, ends bit for bit equal to the uninterrupted run on one rank
+# (every field of the last dump, summary status and steps, steps.csv). Order 1 and 2, a plastic scene (strain +
+# plastic hints in the checkpoint), a heat-conducting one at order 2, ARS(2,2,2) (its lagged stage velocities).
+set(RESTART ${SCRIPTS}/expect_restart.sh)
+set(RESTART_SEDOV ${INPUTS}/sedov2d.yaml --set mesh.size=0.0288 --set output.interval=0.1)
+function(restart_test name mode ra rb)
+    add_test(NAME restart_${name} COMMAND bash ${RESTART} ${WORK}/restart_${name} ${mode} ${ra} ${rb} ${PYTHON}
+             ${SCRIPTS}/compare_runs.py -- ${UNILAG} ${ARGN})
+    set(procs ${ra})
+    if(rb GREATER ra)
+        set(procs ${rb})
+    endif()
+    set_tests_properties(restart_${name} PROPERTIES LABELS "regression;mpi" PROCESSORS ${procs})
+endfunction()
+restart_test(sedov_np1_np1 interval:0.4:320 1 1 ${RESTART_SEDOV})
+restart_test(sedov_order2_np2_np3 interval:0.4:480 2 3 ${RESTART_SEDOV} --set scheme.order=2)
+restart_test(sedov_order2_signal_np1_np2 signal 1 2 ${RESTART_SEDOV} --set scheme.order=2)
+restart_test(sedov_order2_signal_np2_np1 signal 2 1 ${RESTART_SEDOV} --set scheme.order=2)
+restart_test(impact_np2_np1 interval:2.5e-6:70 2 1 ${INPUTS}/impact2d.yaml --set mesh.size=0.002
+             --set output.interval=0)
+restart_test(heat_order2_np1_np2 interval:0.5:240 1 2 ${INPUTS}/heat_conduction2d.yaml --set mesh.size=0.02
+             --set scheme.order=2 --set output.interval=0)
+restart_test(vortex_ars222_np3_np2 interval:0.5:28 3 2 ${INPUTS}/vortex2d.yaml --set scheme.order=2
+             --set scheme.integrator=ars222 --set output.interval=0)
+
+# A checkpoint that cannot serve: missing, truncated, from another scene, mesh or scheme. Exit 2, one message, and
+# the output folder untouched (expect_error.sh: not even created).
+add_test(NAME restart_source COMMAND ${UNILAG} run ${SMALL_SEDOV} --set output.checkpoint_interval=0.1
+         --output ${WORK}/restart_source)
+add_test(NAME restart_truncate COMMAND bash -c "head -c 3000 '${WORK}/restart_source/checkpoint.h5' > '${WORK}/truncated.h5'")
+set_tests_properties(restart_source PROPERTIES FIXTURES_SETUP restart_source LABELS regression)
+set_tests_properties(restart_truncate PROPERTIES FIXTURES_REQUIRED restart_source FIXTURES_SETUP restart_truncated
+                     LABELS regression)
+set(CK ${WORK}/restart_source/checkpoint.h5)
+function(restart_error name file pattern)
+    add_test(NAME error_restart_${name} COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err_restart_${name}
+             "--restart '.*': ${pattern}" -- ${UNILAG} run ${ARGN} --restart ${file})
+    set_tests_properties(error_restart_${name} PROPERTIES FIXTURES_REQUIRED "restart_source;restart_truncated"
+                         LABELS regression)
+endfunction()
+restart_error(missing ${WORK}/none.h5 "not a readable checkpoint" ${SMALL_SEDOV})
+restart_error(truncated ${WORK}/truncated.h5 "not a readable checkpoint \\(missing, truncated or corrupt HDF5\\)"
+              ${SMALL_SEDOV})
+restart_error(other_scene ${CK} "a checkpoint of another run \\(title 'sedov2d', this scene 'vortex2d'\\)"
+              ${INPUTS}/vortex2d.yaml --quiet)
+restart_error(other_mesh ${CK} "a checkpoint of another run \\(cells '1018', this scene '4048'\\)" ${SMALL_SEDOV}
+              --set mesh.size=0.0288)
+restart_error(other_order ${CK} "a checkpoint of another run \\(order '1', this scene '2'\\)" ${SMALL_SEDOV}
+              --set scheme.order=2)
