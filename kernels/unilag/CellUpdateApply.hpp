@@ -188,15 +188,9 @@ LO flagInadmissible(const MeshView<D>& mesh, const ConstField& stateNew, const C
     {
         if (flags(i, 0) != 0.0)
             return;
-        Vec<D> v, J = Vec<D>::zero();
-        for (int d = 0; d < D; ++d)
-            v[d] = stateNew(i, S::vel + d);
-        gpr::Sym3 G = gpr::identity(1.0);
-        if constexpr (P::strain)
-            G = loadSym3(stateNew, i, S::G);
-        if constexpr (P::heat)
-            for (int d = 0; d < D; ++d)
-                J[d] = stateNew(i, S::J + d);
+        Vec<D> v, J;
+        gpr::Sym3 G;
+        loadKinematics<D, P>(stateNew, i, v, G, J);
         const double rho = 1.0 / stateNew(i, S::omega);
         const Material& m = materials(cellMaterial(i));
         if (volume(i) <= 0.0 || updatedSound2<D, P>(m, rho, stateNew(i, S::energy), v, G, J) < 0.0)

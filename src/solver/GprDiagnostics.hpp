@@ -59,15 +59,9 @@ std::string diagnose(const GprModel<D, P>& md, const UpdateCheck& check, double 
         auto matOf = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), md.cellMaterial);
         const Material& m = mats(matOf(i));
         // The admissibility test of the update (CellUpdateApply.hpp), on this cell.
-        Vec<D> v, J = Vec<D>::zero();
-        for (int d = 0; d < D; ++d)
-            v[d] = sn(i, S::vel + d);
-        gpr::Sym3 G = gpr::identity(1.0);
-        if constexpr (P::strain)
-            G = loadSym3(sn, i, S::G);
-        if constexpr (P::heat)
-            for (int d = 0; d < D; ++d)
-                J[d] = sn(i, S::J + d);
+        Vec<D> v, J;
+        gpr::Sym3 G;
+        loadKinematics<D, P>(sn, i, v, G, J);
         const double rho = 1.0 / sn(i, S::omega);
         const double eps = internalEnergy<D, P>(m, sn(i, S::energy), v, G, J);
         const double c2 = gpr::soundSpeed2(m.eos, rho, gpr::pressure(m.eos, rho, eps));
