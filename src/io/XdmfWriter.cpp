@@ -182,8 +182,10 @@ std::string XdmfWriter::collectionPath() const { return dir_ + "/" + base_ + ".x
 
 void XdmfWriter::continueSeries(int dumps) {
   dumps_.clear();
+  // The collection lists indices (the times are in the step files); a restart into another folder has none of them.
   if (rank_ == 0)
-    for (int i = 0; i < dumps; ++i) dumps_.emplace_back(i, 0.0);  // the collection lists indices; times are in the steps
+    for (int i = 0; i < dumps; ++i)
+      if (std::ifstream(dir_ + "/" + stepName(i) + ".xmf").good()) dumps_.emplace_back(i, 0.0);
 }
 
 std::vector<XdmfWriter::Dataset> XdmfWriter::datasetsOf(const std::vector<CellField>& cellFields,

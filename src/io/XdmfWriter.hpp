@@ -74,8 +74,8 @@ public:
   std::string writeStep(int index, double time, const std::vector<double>& coords,
                         const std::vector<CellField>& cellFields, const std::vector<NodeField>& nodeFields = {});
 
-  /*! \brief A restarted run: the collection already holds dumps 0 .. dumps - 1 (their files stay in dir), and the
-   *  next writeStep adds to them. */
+  /*! \brief A restarted run: the collection already holds dumps 0 .. dumps - 1 (those whose files are in dir), and
+   *  the next writeStep adds to them. */
   void continueSeries(int dumps);
 
   /*! \brief Path of the temporal collection file "<dir>/<basename>.xmf". */

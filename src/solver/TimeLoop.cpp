@@ -196,7 +196,8 @@ LoopResult runTimeLoop(TimeSystem& system, const TimeControl& c, MPI_Comm comm, 
             if (c.checkpointInterval > 0.0 && s.t >= s.nextCheckpoint * (1.0 - 1e-12) &&
                 s.t < c.endTime * (1.0 - 1e-14))
             {
-                s.nextCheckpoint += c.checkpointInterval;
+                while (s.nextCheckpoint <= s.t * (1.0 + 1e-12)) // one checkpoint even if a step spans several
+                    s.nextCheckpoint += c.checkpointInterval;
                 if (steps)
                     steps->flush(); // the checkpoint's steps.csv is complete up to its step
                 system.checkpoint(s);
