@@ -2,7 +2,9 @@
 
 #include <hdf5.h>
 
+#include <algorithm>
 #include <cstdio>
+#include <type_traits>
 
 #include "core/Errors.hpp"
 
@@ -82,9 +84,7 @@ template <class T> void bcastMap(MPI_Comm comm, std::map<std::string, T>& m)
         std::string name = rank == 0 ? it->first : std::string();
         T value = rank == 0 ? it->second : T();
         bcastString(comm, name);
-        if constexpr (std::is_same_v<T, double>)
-            MPI_Bcast(&value, 1, MPI_DOUBLE, 0, comm);
-        else if constexpr (std::is_same_v<T, int>)
+        if constexpr (std::is_same_v<T, int>)
             MPI_Bcast(&value, 1, MPI_INT, 0, comm);
         else if constexpr (std::is_same_v<T, std::string>)
             bcastString(comm, value);
@@ -136,8 +136,7 @@ void writeDataset(hid_t group, const std::string& name, hid_t type, int rank, co
 }
 
 //! Rank 0: the whole file, or the reason it cannot be written.
-std::string writeFile(const std::string& path, const std::map<std::string, double>& numbers,
-                      const std::map<std::string, std::string>& texts,
+std::string writeFile(const std::string& path, const std::map<std::string, std::string>& texts,
                       const std::map<std::string, std::vector<double>>& vectors,
                       const std::map<std::string, std::vector<double>>& tables, const std::map<std::string, int>& cols)
 {
@@ -146,15 +145,11 @@ std::string writeFile(const std::string& path, const std::map<std::string, doubl
         H5Id file{H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose};
         if (file.id < 0)
             return "cannot create " + path;
-        H5Id gn{H5Gcreate2(file.id, "numbers", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose};
         H5Id gt{H5Gcreate2(file.id, "texts", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose};
         H5Id gv{H5Gcreate2(file.id, "vectors", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose};
         H5Id gr{H5Gcreate2(file.id, "tables", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose};
-        if (gn.id < 0 || gt.id < 0 || gv.id < 0 || gr.id < 0)
+        if (gt.id < 0 || gv.id < 0 || gr.id < 0)
             return "cannot create the groups of " + path;
-        const hsize_t one = 1;
-        for (const auto& [name, v] : numbers)
-            writeDataset(gn.id, name, H5T_NATIVE_DOUBLE, 1, &one, &v);
         for (const auto& [name, v] : texts)
         {
             const hsize_t n = v.size();
@@ -239,7 +234,7 @@ void CheckpointWriter::commit()
     {
         H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
         texts_["format"] = formatTag;
-        error = writeFile(tmp, numbers_, texts_, vectors_, tables_, tableColumns_);
+        error = writeFile(tmp, texts_, vectors_, tables_, tableColumns_);
         if (error.empty() && std::rename(tmp.c_str(), path_.c_str()) != 0)
             error = "cannot rename " + tmp + " to " + path_;
         if (!error.empty())
@@ -259,20 +254,13 @@ CheckpointReader::CheckpointReader(MPI_Comm comm, const std::string& path) : pat
     {
         H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
         H5Id file{H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose};
-        H5Id gn{file.id < 0 ? -1 : H5Gopen2(file.id, "numbers", H5P_DEFAULT), H5Gclose};
         H5Id gt{file.id < 0 ? -1 : H5Gopen2(file.id, "texts", H5P_DEFAULT), H5Gclose};
         H5Id gv{file.id < 0 ? -1 : H5Gopen2(file.id, "vectors", H5P_DEFAULT), H5Gclose};
         H5Id gr{file.id < 0 ? -1 : H5Gopen2(file.id, "tables", H5P_DEFAULT), H5Gclose};
         std::vector<hsize_t> dims;
-        bool ok = gn.id >= 0 && gt.id >= 0 && gv.id >= 0 && gr.id >= 0;
+        bool ok = gt.id >= 0 && gv.id >= 0 && gr.id >= 0;
         for (const std::string& name : ok ? members(gt.id) : std::vector<std::string>())
             ok = ok && readDataset(gt.id, name, H5T_NATIVE_CHAR, dims, resizeText, &texts_[name]);
-        for (const std::string& name : ok ? members(gn.id) : std::vector<std::string>())
-        {
-            std::vector<double> v;
-            ok = ok && readDataset(gn.id, name, H5T_NATIVE_DOUBLE, dims, resizeDoubles, &v) && v.size() == 1;
-            numbers_[name] = ok ? v[0] : 0.0;
-        }
         for (const std::string& name : ok ? members(gv.id) : std::vector<std::string>())
             ok = ok && readDataset(gv.id, name, H5T_NATIVE_DOUBLE, dims, resizeDoubles, &vectors_[name]);
         for (const std::string& name : ok ? members(gr.id) : std::vector<std::string>())
@@ -289,19 +277,10 @@ CheckpointReader::CheckpointReader(MPI_Comm comm, const std::string& path) : pat
     bcastString(comm, error);
     if (!error.empty())
         throw InputError("--restart '" + path + "': " + error);
-    bcastMap(comm, numbers_);
     bcastMap(comm, texts_);
     bcastMap(comm, vectors_);
     bcastMap(comm, tables_);
     bcastMap(comm, tableColumns_);
-}
-
-double CheckpointReader::number(const std::string& name) const
-{
-    auto it = numbers_.find(name);
-    if (it == numbers_.end())
-        throw InputError("--restart '" + path_ + "': no number '" + name + "'");
-    return it->second;
 }
 
 std::string CheckpointReader::text(const std::string& name) const

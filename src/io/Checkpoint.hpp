@@ -1,7 +1,7 @@
 /*! \file Checkpoint.hpp
  *  \brief One HDF5 file of a run's persistent state (issue 14): named tables of rows keyed by global id (cells or
- *  nodes), so that it reads on any number of ranks, plus named numbers and texts (the time loop's state, the
- *  scene's identity).
+ *  nodes), so that it reads on any number of ranks, plus named lists of numbers and texts (the time loop's state,
+ *  the scene's identity).
  *
  *  Rank 0 writes and reads the file; the rows travel by MPI (gathered by global id, broadcast back). It is written to
  *  "<path>.tmp" and renamed, so a crash mid-write never leaves a half checkpoint under the real name. A file that is
@@ -30,7 +30,6 @@ class CheckpointWriter
 {
   public:
     CheckpointWriter(MPI_Comm comm, std::string path) : comm_(comm), path_(std::move(path)) {}
-    void number(const std::string& name, double v) { numbers_[name] = v; }
     void text(const std::string& name, const std::string& v) { texts_[name] = v; }
     void numbers(const std::string& name, const std::vector<double>& v) { vectors_[name] = v; }
     //! A table of nGlobal rows; every rank gives its owned rows. Collective.
@@ -41,7 +40,6 @@ class CheckpointWriter
   private:
     MPI_Comm comm_;
     std::string path_;
-    std::map<std::string, double> numbers_;
     std::map<std::string, std::string> texts_;
     std::map<std::string, std::vector<double>> vectors_;
     std::map<std::string, std::vector<double>> tables_; //!< rank 0: rows in global-id order
@@ -53,7 +51,6 @@ class CheckpointReader
   public:
     //! Opens and reads the whole file on rank 0 and broadcasts it. Collective; InputError if unreadable.
     CheckpointReader(MPI_Comm comm, const std::string& path);
-    double number(const std::string& name) const;
     std::string text(const std::string& name) const;
     const std::vector<double>& numbers(const std::string& name) const;
     //! The rows of the given global ids (ncomp columns, checked), row-major. InputError if absent.
@@ -61,7 +58,6 @@ class CheckpointReader
 
   private:
     std::string path_;
-    std::map<std::string, double> numbers_;
     std::map<std::string, std::string> texts_;
     std::map<std::string, std::vector<double>> vectors_;
     std::map<std::string, std::vector<double>> tables_;
