@@ -45,7 +45,8 @@ template <int D, class P> void GprOperator<D, P>::stageState(double tStage)
         ScopedTimer timer(md.timers, Phase::Reconstruction);
         limitedGradients<D, P>(md.m, sm, md.auxMid, md.sigmaMid, md.geomMid, xm, md.write("gradients"), md.bc,
                                md.limiter);
-        dropFlaggedGradients(md.write("gradients"), md.read("first_order"), md.m.nOwnedCells);
+        if (fallbackMarked_)
+            dropFlaggedGradients(md.write("gradients"), md.read("first_order"), md.m.nOwnedCells);
     }
     halo("gradients");
     rec_ = Reconstruction<D>{md.read("gradients"), xm, md.geomMid.centroid};

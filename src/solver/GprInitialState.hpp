@@ -86,20 +86,6 @@ std::string regionState(const GprModel<D, P>& md, std::size_t r, const MatV& mat
     return {};
 }
 
-//! Signed volume (times D!) of the simplex p[0..D]: 2D the cross product, 3D the triple product.
-template <int D> double signedSimplexVolume(const double (&p)[D + 1][3])
-{
-    double e[D][3];
-    for (int k = 0; k < D; ++k)
-        for (int a = 0; a < 3; ++a)
-            e[k][a] = p[k + 1][a] - p[0][a];
-    if constexpr (D == 2)
-        return e[0][0] * e[1][1] - e[0][1] * e[1][0];
-    else
-        return e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) - e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
-               e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
-}
-
 /*! Why the energy deposit cannot be placed ("" if it can): its point must lie in a cell of the initial mesh (on a
  *  boundary counts; a relative 1e-9 of the cell's volume). Else the nearest node, possibly far away, would take the
  *  energy. Collective. */
@@ -109,19 +95,21 @@ template <int D, class P> std::string depositOutsideMesh(const GprModel<D, P>& m
     int inside = 0;
     for (LO i = 0; i < dm.nOwnedCells && !inside; ++i)
     {
-        double p[D + 1][3];
+        Vec<D> p[D + 1];
         for (int k = 0; k <= D; ++k)
-            for (int a = 0; a < 3; ++a)
-                p[k][a] = a < D ? dm.coords0[3 * dm.cellNodesHost[(D + 1) * i + k] + a] : 0.0;
-        const double whole = signedSimplexVolume<D>(p);
+            for (int a = 0; a < D; ++a)
+                p[k][a] = dm.coords0[3 * dm.cellNodesHost[(D + 1) * i + k] + a];
+        const double whole = Simplex<D>(p).volume;
         bool in = true;
         for (int k = 0; k <= D && in; ++k)
         {
-            double q[D + 1][3];
-            std::copy(&p[0][0], &p[0][0] + (D + 1) * 3, &q[0][0]);
+            // the point replaces vertex k: a negative volume puts it outside the face opposite k
+            Vec<D> q[D + 1];
+            for (int m = 0; m <= D; ++m)
+                q[m] = p[m];
             for (int a = 0; a < D; ++a)
                 q[k][a] = md.scene.depositPosition[a];
-            in = signedSimplexVolume<D>(q) / whole >= -1e-9;
+            in = Simplex<D>(q).volume / whole >= -1e-9;
         }
         inside = in ? 1 : 0;
     }

@@ -91,7 +91,8 @@ template <int D, class P> class GprOperator
             ScopedTimer timer(md_.timers, Phase::Reconstruction);
             limitedGradients<D, P>(md_.m, md_.read("state"), md_.aux, stressIterate(), md_.geom, md_.read("x"),
                                    md_.write("gradients_n"), md_.bc, md_.limiter);
-            dropFlaggedGradients(md_.write("gradients_n"), md_.read("first_order"), md_.m.nOwnedCells);
+            if (fallbackMarked_)
+                dropFlaggedGradients(md_.write("gradients_n"), md_.read("first_order"), md_.m.nOwnedCells);
         }
         halo("gradients_n");
         recStart_ = Reconstruction<D>{md_.read("gradients_n"), md_.read("x"), md_.geom.centroid};
@@ -119,8 +120,13 @@ template <int D, class P> class GprOperator
     }
 
     /*! Order 2, the a posteriori first-order fallback (docs/gpr-model.md 2.5): a new step starts with no cell
-     *  marked. */
-    void clearFallback() { Kokkos::deep_copy(md_.write("first_order"), 0.0); }
+     *  marked. Steps without a fallback (nearly all) pay neither this fill nor the gradient drops. */
+    void clearFallback()
+    {
+        if (fallbackMarked_)
+            Kokkos::deep_copy(md_.write("first_order"), 0.0);
+        fallbackMarked_ = false;
+    }
 
     /*! Marks the cells that the last update left inadmissible (state_new, geomNew) for first order in the rest of
      *  this step, with their ghosts; returns how many were marked, over all ranks. Collective. */
@@ -131,6 +137,7 @@ template <int D, class P> class GprOperator
         halo("first_order");
         double count[1] = {double(local)};
         mpi::allSum(md_.comm, count);
+        fallbackMarked_ = fallbackMarked_ || count[0] > 0.0;
         return long(count[0]);
     }
 
@@ -241,6 +248,7 @@ template <int D, class P> class GprOperator
     BalanceRates<D> balanceOf(const SubcellForces<D, P>& forces, const Reconstruction<D>& heatRec = {});
     GprModel<D, P>& md_;
     Reconstruction<D> recStart_; //!< order 2: the limited gradients of the state at t^n (predictor)
+    bool fallbackMarked_ = true; //!< some cell is marked in first_order (true at first: the field is not filled)
     Reconstruction<D> rec_;      //!< order 2: the midpoint state's limited gradients
     Reconstruction<D> heatRec_;  //!< order 2, heat: the midpoint state's theta, eps, J gradients
     Reconstruction<D> heatRecStart_; //!< order 2, heat: those of the state at t^n
