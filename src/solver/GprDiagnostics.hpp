@@ -39,7 +39,7 @@ template <int D, class P> void totals(const GprModel<D, P>& md, double (&out)[D 
 
 /*! The diagnosis of a rejected update: the bad cell with the lowest global id (each rank's check holds its bad
  *  cell of lowest local index, and owned cells are sorted by global id, so the text is the same on any number of
- *  ranks), where it started, and its state. Collective. */
+ *  ranks), where it is at t, and its state. Collective. */
 template <int D, class P>
 std::string diagnose(const GprModel<D, P>& md, const UpdateCheck& check, double t, double dt, int attempts)
 {
@@ -67,9 +67,13 @@ std::string diagnose(const GprModel<D, P>& md, const UpdateCheck& check, double 
         const double c2 = gpr::soundSpeed2(m.eos, rho, gpr::pressure(m.eos, rho, eps));
         std::ostringstream os;
         os.precision(6);
-        double c[3];
-        initialCentroid<D>(dm, i, c);
-        os << "cell " << dm.cellGid[i] << " (initial centroid " << c[0] << ", " << c[1] << ", " << c[2]
+        // where the cell is at t (the last dump shows it there), from the positions every rank agrees on
+        auto xh = md.fields["x"].getLocalViewHost(Tpetra::Access::ReadOnly);
+        double c[3] = {0.0, 0.0, 0.0};
+        for (int k = 0; k < D + 1; ++k)
+            for (int d = 0; d < D; ++d)
+                c[d] += xh(dm.cellNodesHost[(D + 1) * i + k], d) / (D + 1);
+        os << "cell " << dm.cellGid[i] << " (centroid " << c[0] << ", " << c[1] << ", " << c[2]
            << ") at t = " << t << " after " << attempts << " halvings of dt (last dt " << dt << "): volume ratio "
            << volNew(i) / vol(i) << " (volume " << vol(i) << " -> " << volNew(i) << "), density " << rho
            << ", specific internal energy " << eps << " (total " << sn(i, S::energy) << ", kinetic "
