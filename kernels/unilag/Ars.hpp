@@ -115,16 +115,18 @@ inline void combineNodeVelocities(const ConstField& v0, const ConstField& v1, do
  *  tau1(sigma_bar) consistent with the result, as in stage 1 (robust for large exponents, where a backward-Euler
  *  solve with tau1 depending on its own result has no safe bracket; it differs from backward Euler by
  *  O((beta dt k)^2), in the non-stiff range only). Returns the smallest volume ratio and a bad cell (G not SPD or
- *  an inverted cell; -1 if none); maxChange is unused (0). */
+ *  an inverted cell; -1 if none); maxChange is unused (0). plasticWork: as strainUpdate's. */
 template <int D, class P>
 PicardCheck arsFinalStrain(const MeshView<D>& mesh, const ConstField& state, const ConstField& increment,
                            const ConstField& stage, const CellGeometry& stageGeom, const ConstField& v1,
                            const CellGeometry& geom, const View<const double*>& mass,
                            const View<const int*>& cellMaterial, const View<const Material*>& materials,
                            const ConstField& xNew, double dt, const Field& stateNew,
-                           const View<double*>& plasticHint = View<double*>())
+                           const View<double*>& plasticHint = View<double*>(),
+                           const View<double*>& plasticWork = View<double*>())
 {
     static_assert(P::strain, "arsFinalStrain is for the strain variants");
+    const bool count = plasticWork.extent(0) > 0;
     using S = StateLayout<D, P>;
     constexpr double beta = arsBeta;
     auto corner = stageGeom.corner;
@@ -150,7 +152,7 @@ PicardCheck arsFinalStrain(const MeshView<D>& mesh, const ConstField& state, con
             if constexpr (P::plastic)
                 if (m.strainLaw == StrainPlastic)
                     G = gpr::relaxPlasticStrain(B, mass(i) / newVolume, m.csh, beta * dt, m.tau10, m.sigmaY,
-                                                m.exponent, &plasticHint(i));
+                                                m.exponent, &plasticHint(i), count ? &plasticWork(i) : nullptr);
             if (m.strainLaw == StrainConstant)
                 G = gpr::implicitStrainRelax(B, beta * dt * gpr::strainRelaxationRate(B, m.tau1));
             bad = !(gpr::det(G) > 0.0) || !(gpr::trace(G) > 0.0) || !(gpr::norm2(G) == gpr::norm2(G));

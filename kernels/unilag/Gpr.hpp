@@ -254,9 +254,11 @@ KOKKOS_INLINE_FUNCTION Sym3 transportAndRelax(const Sym3& G0, const Sym3& dT, do
  *  increasing in y (relaxation lowers sigma_bar) with slope >= about 1, by Newton with analytic derivatives inside a
  *  bisection bracket: one eigen-decomposition and a few one-panel quadratures per call. Negligible flow
  *  (kdt < 1e-8 even at sigma_bar(G*), i.e. well below the yield stress) costs only the von Mises stress of G*.
- *  det G is preserved to round-off (to O(kdt^2) ~ 1e-16 on the negligible-flow path). */
+ *  det G is preserved to round-off (to O(kdt^2) ~ 1e-16 on the negligible-flow path).
+ *  work, if given, is incremented by the evaluations of Phi, plus one for the eigen-decomposition: the cost of the
+ *  cell above the negligible-flow path, which the load balance weighs (GprSystem::cellCosts). */
 KOKKOS_INLINE_FUNCTION Sym3 relaxPlasticStrain(const Sym3& Gs, double rho, double csh, double dt, double tau10,
-                                               double sigmaY, double n, double* hint = nullptr)
+                                               double sigmaY, double n, double* hint = nullptr, double* work = nullptr)
 {
     const double mu = rho * csh * csh;
     const double detG = det(Gs);
@@ -274,6 +276,7 @@ KOKKOS_INLINE_FUNCTION Sym3 relaxPlasticStrain(const Sym3& Gs, double rho, doubl
         return Gs - kmath::exp(lnKdt0) * symProduct(Gs, dev(Gs));
     }
     const Eigen3 e = eigen(Gs);
+    double evaluations = 1.0;
     const double lmin = e.value[0], lmax = e.value[2];
     if (!(lmin > 0.0) || lmin == lmax)
         return Gs;
@@ -314,6 +317,7 @@ KOKKOS_INLINE_FUNCTION Sym3 relaxPlasticStrain(const Sym3& Gs, double rho, doubl
     };
     // Phi(y) and dPhi/dy
     auto phi = [&](double yv, double& dphi) {
+        evaluations += 1.0;
         const double s = kmath::exp(yv);
         double D[3], dD[3];
         logs(s, D, dD);
@@ -353,7 +357,11 @@ KOKKOS_INLINE_FUNCTION Sym3 relaxPlasticStrain(const Sym3& Gs, double rho, doubl
     {
         yb = kmath::log(sSat);
         if (!(phi(yb, d) > 0.0))
+        {
+            if (work)
+                *work += evaluations;
             return identity(g); // relaxed to equilibrium within the step
+        }
     }
     double ya = yb - 50.0;
     double yv = ya; // if Phi(ya) >= 0 the flow is negligible (50 e-folds below its bound): take ya
@@ -390,6 +398,8 @@ KOKKOS_INLINE_FUNCTION Sym3 relaxPlasticStrain(const Sym3& Gs, double rho, doubl
     }
     if (hint)
         *hint = yv;
+    if (work)
+        *work += evaluations;
     double D[3], dD[3];
     logs(kmath::exp(yv), D, dD);
     const double mD = (D[0] + D[1] + D[2]) / 3.0;

@@ -509,17 +509,20 @@ struct PicardCheck
  *  Second order (midpoint corrector): fluxState and fluxGeom, if given, are the midpoint state and configuration,
  *  so that dT = -dt (G^{n+1/2} L^{n+1/2} + L^T G^{n+1/2}) with L from the midpoint corner vectors; the relaxation
  *  still starts from G^n and spans dt. increment, if given, receives dT (0 where G is not updated): ARS(2,2,2)
- *  takes its stage's stiff source from the residual G - G^n - dT (Ars.hpp). */
+ *  takes its stage's stiff source from the residual G - G^n - dT (Ars.hpp). plasticWork, if given, counts each
+ *  cell's plastic-law evaluations (relaxPlasticStrain's work: the per-cell cost the load balance weighs). */
 template <int D, class P>
 PicardCheck strainUpdate(const MeshView<D>& mesh, const ConstField& state, const ConstField& aux,
                          const CellGeometry& geom, const View<const double*>& mass, const View<const int*>& cellMaterial,
                          const View<const Material*>& materials, const ConstField& xNew, const ConstField& vnode,
                          double dt, const ConstField& sigmaOld, const Field& sigmaNew, const Field& stateNew,
                          const View<double*>& plasticHint = View<double*>(), const ConstField& fluxState = ConstField(),
-                         const CellGeometry& fluxGeom = CellGeometry(), const Field& increment = Field())
+                         const CellGeometry& fluxGeom = CellGeometry(), const Field& increment = Field(),
+                         const View<double*>& plasticWork = View<double*>())
 {
     static_assert(P::strain, "strainUpdate is for the strain variants");
     const bool keep = increment.extent(0) > 0;
+    const bool count = plasticWork.extent(0) > 0;
     using S = StateLayout<D, P>;
     const bool midpoint = fluxState.extent(0) > 0;
     auto corner = midpoint ? fluxGeom.corner : geom.corner;
@@ -551,7 +554,8 @@ PicardCheck strainUpdate(const MeshView<D>& mesh, const ConstField& state, const
             gpr::Sym3 G;
             if constexpr (P::plastic)
                 G = m.strainLaw == StrainPlastic
-                        ? gpr::relaxPlasticStrain(G0 + dT, rho, m.csh, dt, m.tau10, m.sigmaY, m.exponent, &plasticHint(i))
+                        ? gpr::relaxPlasticStrain(G0 + dT, rho, m.csh, dt, m.tau10, m.sigmaY, m.exponent,
+                                                  &plasticHint(i), count ? &plasticWork(i) : nullptr)
                         : gpr::transportAndRelax(G0, dT, dt, m.tau1);
             else
                 G = gpr::transportAndRelax(G0, dT, dt, m.tau1);

@@ -339,6 +339,18 @@ void readOutput(ConfigNode& root, Scene& s)
     o.rejectUnknown();
 }
 
+//! parallel: the load-balance checks and repartitioning.
+void readParallel(ConfigNode& root, Scene& s)
+{
+    ConfigNode p = root.sub("parallel");
+    s.balanceInterval = p.integer("check_interval", s.balanceInterval, 0, 2000000000L);
+    s.imbalanceThreshold = p.nonNegative("imbalance_threshold", s.imbalanceThreshold);
+    s.repartition = p.boolean("repartition", s.repartition);
+    s.partitioner = p.option<std::string>("partitioner", s.partitioner,
+                                          {{"multijagged", "multijagged"}, {"rcb", "rcb"}, {"sfc", "sfc"}});
+    p.rejectUnknown();
+}
+
 //! exact: the exact solution and the --check bounds.
 void readExact(ConfigNode& root, Scene& s)
 {
@@ -412,6 +424,7 @@ Scene readScene(const std::string& file, const std::vector<std::string>& overrid
     readTime(root, s);
     readScheme(root, s);
     readOutput(root, s);
+    readParallel(root, s);
     if (root.has("exact"))
         readExact(root, s);
     root.rejectUnknown();

@@ -156,6 +156,14 @@ struct Scene
     double checkpointInterval = 0.0; //!< simulated time between checkpoints (0: none)
     bool writeOutput = true;
 
+    // parallel: the load balance of a run on several ranks (TimeControl)
+    long balanceInterval = 50;       //!< steps between checks of the ranks' busy times (0: none)
+    double imbalanceThreshold = 1.1; //!< repartition when max / mean of the busy times exceeds it (< 1: always)
+    bool repartition = true;         //!< false: measure and report only
+    //! The partitioner of repartitions: Zoltan2's multijagged or rcb, or sfc (ranges of the global ids, which follow
+    //! a Morton curve of the cells, GlobalMesh.cpp)
+    std::string partitioner = "multijagged";
+
     ExactSolution exactSolution = ExactSolution::None;
     std::string exactTable;            //!< resolved path of a radial profile (csv)
     double exactShockRadius = 0.0;     //!< at exactTime

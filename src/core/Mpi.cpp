@@ -1,11 +1,27 @@
 #include "core/Mpi.hpp"
 
+#include <ctime>
 #include <vector>
 
 #include <Teuchos_DefaultMpiComm.hpp>
 
 namespace unilag::mpi
 {
+namespace
+{
+double waited = 0.0;
+}
+
+double cpuSeconds()
+{
+    timespec t;
+    clock_gettime(CLOCK_PROCESS_CPUTIME_ID, &t);
+    return double(t.tv_sec) + 1e-9 * double(t.tv_nsec);
+}
+
+double waitSeconds() { return waited; }
+
+WaitTimer::~WaitTimer() { waited += cpuSeconds() - t0_; }
 
 MPI_Comm rawComm(const Teuchos::RCP<const Teuchos::Comm<int>>& comm)
 {
@@ -29,6 +45,7 @@ int size(MPI_Comm comm)
 
 double allMin(MPI_Comm comm, double v)
 {
+    WaitTimer wait;
     double r;
     MPI_Allreduce(&v, &r, 1, MPI_DOUBLE, MPI_MIN, comm);
     return r;
@@ -36,13 +53,21 @@ double allMin(MPI_Comm comm, double v)
 
 double allMax(MPI_Comm comm, double v)
 {
+    WaitTimer wait;
     double r;
     MPI_Allreduce(&v, &r, 1, MPI_DOUBLE, MPI_MAX, comm);
     return r;
 }
 
+void allMax(MPI_Comm comm, double* v, int n)
+{
+    WaitTimer wait;
+    MPI_Allreduce(MPI_IN_PLACE, v, n, MPI_DOUBLE, MPI_MAX, comm);
+}
+
 void allSum(MPI_Comm comm, double* v, int n)
 {
+    WaitTimer wait;
     MPI_Allreduce(MPI_IN_PLACE, v, n, MPI_DOUBLE, MPI_SUM, comm);
 }
 
@@ -66,6 +91,7 @@ int argMinRank(MPI_Comm comm, double v)
 
 std::string firstMessage(MPI_Comm comm, const std::string& local)
 {
+    WaitTimer wait;
     const int n = size(comm);
     const int mine = int(local.size());
     std::vector<int> lens(n);

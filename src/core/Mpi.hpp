@@ -23,8 +23,33 @@ MPI_Comm rawComm(const Teuchos::RCP<const Teuchos::Comm<int>>& comm);
 int rank(MPI_Comm comm);
 int size(MPI_Comm comm);
 
+/*! CPU seconds of this process, all its threads (CLOCK_PROCESS_CPUTIME_ID). The load balance measures work in CPU
+ *  time, not wall time: ranks that share cores (more ranks than cores) would otherwise count the time the system
+ *  ran another rank as their own work. */
+double cpuSeconds();
+
+/*! CPU seconds this process has spent in the collectives below and in the halo exchanges (FieldSet::halo), where a
+ *  rank that finished its work early waits (Open MPI polls) for the others. A rank's busy time is its CPU time less
+ *  this: the time loop's load balance compares the ranks' busy times (TimeLoop.cpp). */
+double waitSeconds();
+
+//! Adds the CPU time from construction to destruction to waitSeconds().
+class WaitTimer
+{
+  public:
+    WaitTimer() : t0_(cpuSeconds()) {}
+    ~WaitTimer();
+    WaitTimer(const WaitTimer&) = delete;
+    WaitTimer& operator=(const WaitTimer&) = delete;
+
+  private:
+    double t0_;
+};
+
 double allMin(MPI_Comm comm, double v);
 double allMax(MPI_Comm comm, double v);
+//! The maximum of n values in place over the ranks.
+void allMax(MPI_Comm comm, double* v, int n);
 //! Sums n values in place over the ranks.
 void allSum(MPI_Comm comm, double* v, int n);
 template <int N> void allSum(MPI_Comm comm, double (&v)[N])

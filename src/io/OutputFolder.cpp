@@ -62,7 +62,7 @@ std::vector<std::string> removeRunOutputs(const std::string& dir)
         const std::string name = it->path().filename().string();
         std::error_code e2;
         if ((isDumpName(name) || name == "unilag.xmf" || name == "summary.json" || name == "steps.csv" ||
-             name == "scene.yaml" || name == "checkpoint.h5") &&
+             name == "scene.yaml" || name == "checkpoint.h5" || name == "balance.csv") &&
             it->is_regular_file(e2))
             own.push_back(it->path());
     }

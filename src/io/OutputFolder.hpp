@@ -15,8 +15,8 @@ namespace unilag::io
 std::string outputFolderProblem(const std::string& dir);
 
 /*! \brief Removes from \p dir the files a run writes, by their names: unilag.xmf, unilag_NNNNNN.h5 and
- *  unilag_NNNNNN.xmf (the dumps), summary.json, steps.csv, scene.yaml, checkpoint.h5. Nothing else is touched (not other files,
- *  not folders). Returns the names removed. */
+ *  unilag_NNNNNN.xmf (the dumps), summary.json, steps.csv, scene.yaml, checkpoint.h5, balance.csv. Nothing else is
+ *  touched (not other files, not folders). Returns the names removed. */
 std::vector<std::string> removeRunOutputs(const std::string& dir);
 
 } // namespace unilag::io

@@ -49,7 +49,7 @@ template <int D, class P> bool GprOperator<D, P>::arsFinal(double dt, UpdateChec
         const PicardCheck pc = arsFinalStrain<D, P>(
             md.m, md.read("state"), md.read("ars_strain_increment"), md.read("state_mid"), md.geomMid,
             md.read("ars_v1"), md.geom, md.mass(), md.cellMaterial, md.materials, md.read("x_new"), dt,
-            md.write("state_new"), md.plasticHint(true));
+            md.write("state_new"), md.plasticHint(true), md.plasticWork());
         if (mpi::allMax(md.comm, pc.badCell >= 0 ? 1.0 : 0.0) > 0.0)
         {
             failure = inadmissible(pc.badCell, "in the final stage of ARS(2,2,2)", dt);

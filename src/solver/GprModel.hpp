@@ -6,7 +6,8 @@
  *  Field names (FieldSet), persistent unless said:
  *   cells  state (omega, v, E[, G_e][, J]: StateLayout), mass, material (index, as a double), sigma_prev
  *          (strain: the Picard start's history), sigma_prev2 (strain, order 2), plastic_hint (plastic: each cell's
- *          last plastic-flow parameter), plastic_hint_corrector (plastic, order 2); scratch: state_new, sigma
+ *          last plastic-flow parameter), plastic_hint_corrector (plastic, order 2); scratch: plastic_work (plastic:
+ *          each cell's plastic-law evaluations since the last partition, the load balance's cost), state_new, sigma
  *          (the stress iterate), sigma_next, sigma0, state_mid, gradients (midpoint),
  *          gradients_n (order 2: the state at t^n), heat_gradients, heat_gradients_n (order 2, heat: theta,
  *          eps, J of the midpoint and of t^n);
@@ -53,6 +54,11 @@ template <int D, class P> struct GprModel
 
     GprModel(const Scene& scene, std::shared_ptr<DistributedMesh> mesh);
 
+    /*! The model on a new distribution of the same mesh (repartitioning): persistent fields and the scratch fields
+     *  in carry move by global id, the other work arrays are reallocated empty (geometry and EOS are the caller's
+     *  to recompute). Collective. */
+    void remesh(std::shared_ptr<DistributedMesh> newMesh, const std::vector<std::string>& carry);
+
     const Scene& scene;
     std::shared_ptr<DistributedMesh> mesh;
     MPI_Comm comm;
@@ -88,6 +94,17 @@ template <int D, class P> struct GprModel
             return View<double*>();
         return column(fields[corrector ? "plastic_hint_corrector" : "plastic_hint"]);
     }
+    //! Plastic variant: each cell's plastic-law evaluations since the last partition (relaxPlasticStrain's work).
+    View<double*> plasticWork() const
+    {
+        if constexpr (!P::plastic)
+            return View<double*>();
+        return column(fields["plastic_work"]);
+    }
+
+  private:
+    //! The work arrays sized by the local mesh (not fields: never migrated nor checkpointed).
+    void allocateWork();
 };
 
 template <int D, class P>
@@ -97,7 +114,6 @@ GprModel<D, P>::GprModel(const Scene& scene_, std::shared_ptr<DistributedMesh> m
 {
     rank = mpi::rank(comm);
     size = mpi::size(comm);
-    const auto& dm = *mesh;
     const auto P_ = Lifetime::Persistent, S_ = Lifetime::Scratch;
     fields.add("state", Entity::Cell, S::ncomp, P_);
     fields.add("state_new", Entity::Cell, S::ncomp, S_);
@@ -106,8 +122,6 @@ GprModel<D, P>::GprModel(const Scene& scene_, std::shared_ptr<DistributedMesh> m
     fields.add("x", Entity::Node, D, P_);
     fields.add("x_new", Entity::Node, D, S_);
     fields.add("v_node", Entity::Node, D, S_);
-    fnode = Field("unilag::fnode", dm.nOwnedNodes, D);
-    aux = Field("unilag::aux", dm.nCells, Aux::ncomp<P>());
     if constexpr (P::strain)
     {
         for (const char* f : {"sigma", "sigma_next", "sigma0"})
@@ -122,11 +136,9 @@ GprModel<D, P>::GprModel(const Scene& scene_, std::shared_ptr<DistributedMesh> m
                     fields.add(f, Entity::Cell, 1, P_);
                     Kokkos::deep_copy(column(fields[f]), std::numeric_limits<double>::quiet_NaN());
                 }
+        if constexpr (P::plastic)
+            fields.add("plastic_work", Entity::Cell, 1, S_); // the load balance's cost (GprSystem::cellCosts)
     }
-    if constexpr (P::heat)
-        heatRate = Field("unilag::heatRate", dm.nOwnedCells, 1 + D);
-    geom = CellGeometry(dm.nCells, D);
-    geomNew = CellGeometry(dm.nCells, D);
     if (P::strain || order2)
         fields.add("v_node0", Entity::Node, D, S_);
     if (order2)
@@ -136,18 +148,48 @@ GprModel<D, P>::GprModel(const Scene& scene_, std::shared_ptr<DistributedMesh> m
         fields.add("gradients", Entity::Cell, ReconLayout<D, P>::ncomp, S_);
         fields.add("gradients_n", Entity::Cell, ReconLayout<D, P>::ncomp, S_);
         fields.add("first_order", Entity::Cell, 1, S_); // the step's a posteriori fallback cells (1), else 0
+        if constexpr (P::heat)
+        {
+            fields.add("heat_gradients", Entity::Cell, heat::Quantities<D, P>::ncomp, S_);
+            fields.add("heat_gradients_n", Entity::Cell, heat::Quantities<D, P>::ncomp, S_);
+        }
+    }
+    allocateWork();
+}
+
+template <int D, class P> void GprModel<D, P>::allocateWork()
+{
+    const auto& dm = *mesh;
+    fnode = Field("unilag::fnode", dm.nOwnedNodes, D);
+    aux = Field("unilag::aux", dm.nCells, Aux::ncomp<P>());
+    if constexpr (P::heat)
+        heatRate = Field("unilag::heatRate", dm.nOwnedCells, 1 + D);
+    geom = CellGeometry(dm.nCells, D);
+    geomNew = CellGeometry(dm.nCells, D);
+    if (order2)
+    {
         geomMid = CellGeometry(dm.nCells, D);
         auxMid = Field("unilag::auxMid", dm.nCells, Aux::ncomp<P>());
         if constexpr (P::strain)
             sigmaMid = Field("unilag::sigmaMid", dm.nCells, 6);
         if constexpr (P::heat)
-        {
             heatRateMid = Field("unilag::heatRateMid", dm.nOwnedCells, 1 + D);
-            fields.add("heat_gradients", Entity::Cell, heat::Quantities<D, P>::ncomp, S_);
-            fields.add("heat_gradients_n", Entity::Cell, heat::Quantities<D, P>::ncomp, S_);
-        }
     }
     cellMaterial = View<int*>("unilag::cellMaterial", dm.nCells);
+}
+
+template <int D, class P>
+void GprModel<D, P>::remesh(std::shared_ptr<DistributedMesh> newMesh, const std::vector<std::string>& carry)
+{
+    fields.migrate(newMesh, carry);
+    mesh = std::move(newMesh);
+    m = mesh->view<D>();
+    allocateWork();
+    auto materialHost = fields["material"].getLocalViewHost(Tpetra::Access::ReadOnly);
+    auto cellMaterialHost = Kokkos::create_mirror_view(cellMaterial);
+    for (LO i = 0; i < mesh->nCells; ++i)
+        cellMaterialHost(i) = int(materialHost(i, 0));
+    Kokkos::deep_copy(cellMaterial, cellMaterialHost);
 }
 
 } // namespace unilag

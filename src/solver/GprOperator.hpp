@@ -174,6 +174,8 @@ template <int D, class P> class GprOperator
     /*! The nodes whose force balance each update evaluates: every owned node (everyNode: --check, which asserts the
      *  interior balance) or only those on a boundary (enough for the impulse and work). */
     void selectBalanceNodes(bool everyNode);
+    //! After a repartition: no cell is marked for the fallback, and first_order is refilled at the next mark.
+    void onNewMesh() { fallbackMarked_ = true; }
     //! The force balance (and boundary heat) of the last update's forces, global over the ranks.
     const BalanceRates<D>& lastBalance() const { return balance_; }
 
@@ -193,7 +195,7 @@ template <int D, class P> class GprOperator
     UpdateCheck reduceCheck(UpdateCheck check)
     {
         double ext[3] = {-check.minVolumeRatio, -check.minSound2, check.maxGclDefect};
-        MPI_Allreduce(MPI_IN_PLACE, ext, 3, MPI_DOUBLE, MPI_MAX, md_.comm);
+        mpi::allMax(md_.comm, ext, 3);
         check.minVolumeRatio = -ext[0];
         check.minSound2 = -ext[1];
         check.maxGclDefect = ext[2];

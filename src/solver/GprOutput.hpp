@@ -14,16 +14,23 @@
 namespace unilag
 {
 
-//! A writer of the owned cells of the mesh, as global output node ids. Collective.
-template <int D, class P> std::unique_ptr<io::XdmfWriter> makeWriter(const GprModel<D, P>& md, const std::string& dir)
+//! The owned cells of the mesh as the writer's topology, in global output node ids (again after a repartition:
+//! every dump holds its own connectivity, so the series follows the new one). Collective.
+template <int D, class P> void setTopology(const GprModel<D, P>& md, io::XdmfWriter& writer)
 {
     const auto& dm = *md.mesh;
-    auto writer = std::make_unique<io::XdmfWriter>(md.comm, dir, "unilag", D);
     std::vector<long long> conn(std::size_t(dm.nOwnedCells) * (D + 1));
     for (LO i = 0; i < dm.nOwnedCells; ++i)
         for (int k = 0; k < D + 1; ++k)
             conn[(D + 1) * i + k] = dm.nodeOutputId[dm.cellNodesHost[(D + 1) * i + k]];
-    writer->setTopology(dm.nOwnedNodes, dm.nOwnedCells, conn);
+    writer.setTopology(dm.nOwnedNodes, dm.nOwnedCells, conn);
+}
+
+//! A writer of the owned cells of the mesh. Collective.
+template <int D, class P> std::unique_ptr<io::XdmfWriter> makeWriter(const GprModel<D, P>& md, const std::string& dir)
+{
+    auto writer = std::make_unique<io::XdmfWriter>(md.comm, dir, "unilag", D);
+    setTopology(md, *writer);
     return writer;
 }
 

@@ -85,11 +85,12 @@ template <int D, class P> PicardCheck GprOperator<D, P>::strainStep(double dt, b
     if (midpoint)
         return strainUpdate<D, P>(md_.m, md_.read("state"), md_.aux, md_.geom, md_.mass(), md_.cellMaterial,
                                   md_.materials, xn, v, dt, md_.sigmaMid, md_.write("sigma_next"),
-                                  md_.write("state_new"), md_.plasticHint(true), md_.read("state_mid"), md_.geomMid);
+                                  md_.write("state_new"), md_.plasticHint(true), md_.read("state_mid"), md_.geomMid,
+                                  Field(), md_.plasticWork());
     return strainUpdate<D, P>(md_.m, md_.read("state"), md_.aux, md_.geom, md_.mass(), md_.cellMaterial, md_.materials,
                               xn, v, dt, md_.read("sigma"), md_.write("sigma_next"), md_.write("state_new"),
                               md_.plasticHint(false), ConstField(), CellGeometry(),
-                              keepIncrement_ ? md_.write("ars_strain_increment") : Field());
+                              keepIncrement_ ? md_.write("ars_strain_increment") : Field(), md_.plasticWork());
 }
 
 /*! Picard loop of 2.4 for a step dt: v_node holds the nodal solution for sigma = sigma^0. Each iteration moves the
@@ -105,7 +106,7 @@ template <int D, class P> bool GprOperator<D, P>::picard(double dt, int& iterati
         iterations = l + 1;
         const PicardCheck pc = strainStep(dt, false);
         double ext[3] = {pc.maxChange, -pc.minVolumeRatio, pc.badCell >= 0 ? 1.0 : 0.0};
-        MPI_Allreduce(MPI_IN_PLACE, ext, 3, MPI_DOUBLE, MPI_MAX, md_.comm);
+        mpi::allMax(md_.comm, ext, 3);
         change = ext[0];
         if (ext[2] > 0.0 || !(-ext[1] > 0.0))
         {

@@ -33,6 +33,10 @@ inline TimeControl timeControl(const Scene& scene, const RunOptions& options)
     c.stepsCsv = (std::filesystem::path(scene.outputDirectory) / "steps.csv").string();
     c.checkpointInterval = scene.checkpointInterval;
     c.checkpointOnSignal = true;
+    c.balanceInterval = scene.balanceInterval;
+    c.imbalanceThreshold = scene.imbalanceThreshold;
+    c.repartition = scene.repartition;
+    c.balanceCsv = (std::filesystem::path(scene.outputDirectory) / "balance.csv").string();
     return c;
 }
 

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <fstream>
+#include <sstream>
 
 #include "core/Format.hpp"
 
@@ -56,6 +57,41 @@ void Summary::write(const std::string& file) const
     out << "}\n";
 }
 
+namespace
+{
+
+/*! The load-balance checks (max / mean of the ranks' busy times per window: mean, max, the last; the cost model's
+ *  prediction for the same partitions, mean) and each repartition: step, time, imbalance before and after, cells
+ *  moved, seconds. */
+std::string loadBalanceJson(const LoopResult& r)
+{
+    double sum = 0.0, worst = 0.0, model = 0.0;
+    for (const BalanceCheck& c : r.balanceChecks)
+    {
+        sum += c.imbalance;
+        worst = std::max(worst, c.imbalance);
+        model += c.modelImbalance;
+    }
+    std::ostringstream os;
+    os << "{\"checks\": " << r.balanceChecks.size()
+       << ", \"imbalance_mean\": " << jsonNumber(sum / double(r.balanceChecks.size()))
+       << ", \"imbalance_max\": " << jsonNumber(worst)
+       << ", \"imbalance_last\": " << jsonNumber(r.balanceChecks.back().imbalance)
+       << ", \"model_imbalance_mean\": " << jsonNumber(model / double(r.balanceChecks.size()))
+       << ", \"repartitions\": [";
+    for (std::size_t k = 0; k < r.repartitions.size(); ++k)
+    {
+        const RepartitionEvent& e = r.repartitions[k];
+        os << (k ? ", " : "") << "{\"step\": " << e.step << ", \"t\": " << jsonNumber(e.t)
+           << ", \"imbalance_before\": " << jsonNumber(e.before) << ", \"imbalance_after\": " << jsonNumber(e.after)
+           << ", \"cells_moved\": " << e.cellsMoved << ", \"seconds\": " << jsonNumber(e.seconds) << "}";
+    }
+    os << "]}";
+    return os.str();
+}
+
+} // namespace
+
 Summary runSummary(const std::string& file, const std::string& title, const LoopResult& r, int dim, long long cells,
                    long long nodes, int ranks, int threads)
 {
@@ -69,6 +105,8 @@ Summary runSummary(const std::string& file, const std::string& title, const Loop
         .integer("threads", threads)
         .integer("steps", r.state.steps)
         .integer("retries", r.state.retries);
+    if (!r.balanceChecks.empty())
+        s.raw("load_balance", loadBalanceJson(r));
     return s;
 }
 

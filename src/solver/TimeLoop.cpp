@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cstdio>
+#include <cstdlib>
 #include <fstream>
 #include <iomanip>
 #include <memory>
@@ -10,6 +11,7 @@
 #include <unistd.h>
 
 #include "core/Format.hpp"
+#include "core/Mpi.hpp"
 
 namespace unilag
 {
@@ -44,6 +46,7 @@ class StopOnSignal
     //! The signal any rank has received (0: none). Collective.
     static int received(MPI_Comm comm)
     {
+        mpi::WaitTimer wait;
         int s = int(stopSignal);
         MPI_Allreduce(MPI_IN_PLACE, &s, 1, MPI_INT, MPI_MAX, comm);
         return s;
@@ -53,6 +56,84 @@ class StopOnSignal
     bool enabled_;
     void (*term_)(int) = SIG_DFL;
     void (*int_)(int) = SIG_DFL;
+};
+
+/*! The load balance: each rank's busy time in the steps (CPU time less mpi::waitSeconds, the time it waited for
+ *  the others), compared over the ranks every balanceInterval steps. Above the threshold the system repartitions,
+ *  if its cost model sees an imbalance too (above Zoltan2's tolerance, 1.05): an imbalance the model does not see,
+ *  a new partition by that model cannot remove (a rank slowed by another process on its core, say). A threshold
+ *  below 1 repartitions at every check. A few reductions of one number per check. */
+class LoadBalancer
+{
+  public:
+    //! fromStep: the step a restarted run continues from (its balance.csv keeps the rows up to there)
+    LoadBalancer(const TimeControl& c, MPI_Comm comm, long fromStep)
+        : c_(c), comm_(comm), size_(mpi::size(comm)),
+          on_(c.balanceInterval > 0 && (size_ > 1 || (c.repartition && c.imbalanceThreshold < 1.0)))
+    {
+        if (!on_ || mpi::rank(comm) != 0 || c_.balanceCsv.empty())
+            return;
+        std::vector<std::string> kept = {"step,t,imbalance,model_imbalance,repartitioned,cells_moved,seconds"};
+        std::ifstream old(fromStep > 0 ? c_.balanceCsv : std::string());
+        for (std::string line; std::getline(old, line);)
+            if (line.rfind("step,", 0) != 0 && std::strtol(line.c_str(), nullptr, 10) <= fromStep)
+                kept.push_back(line);
+        csv_ = std::make_unique<std::ofstream>(c_.balanceCsv);
+        for (const std::string& line : kept)
+            *csv_ << line << '\n';
+    }
+    void startStep()
+    {
+        if (!on_)
+            return;
+        start_ = mpi::cpuSeconds();
+        waited_ = mpi::waitSeconds();
+    }
+    void endStep()
+    {
+        if (on_)
+            busy_ += mpi::cpuSeconds() - start_ - (mpi::waitSeconds() - waited_);
+    }
+    //! After accepted step number step (ending at t): the check, and the repartition it calls for. Collective.
+    void check(TimeSystem& system, long step, double t, LoopResult& r)
+    {
+        if (!on_ || step % c_.balanceInterval != 0)
+            return;
+        double sum[1] = {busy_};
+        mpi::allSum(comm_, sum);
+        const double imbalance = sum[0] > 0.0 ? mpi::allMax(comm_, busy_) * size_ / sum[0] : 1.0;
+        busy_ = 0.0;
+        const double model = system.modelImbalance();
+        r.balanceChecks.push_back({step, t, imbalance, model});
+        if (!r.repartitions.empty() && r.repartitions.back().after < 0.0)
+            r.repartitions.back().after = imbalance;
+        RepartitionEvent e{step, t, imbalance};
+        const bool forced = c_.imbalanceThreshold < 1.0;
+        const bool move = c_.repartition && repartitionable_ && imbalance > c_.imbalanceThreshold &&
+                          (forced || model > modelTolerance);
+        if (move)
+        {
+            const auto t0 = Clock::now();
+            e.cellsMoved = system.repartition();
+            e.seconds = mpi::allMax(comm_, std::chrono::duration<double>(Clock::now() - t0).count());
+            repartitionable_ = e.cellsMoved >= 0;
+            if (repartitionable_)
+                r.repartitions.push_back(e);
+        }
+        if (csv_)
+            *csv_ << step << ',' << std::setprecision(12) << t << ',' << imbalance << ',' << model << ','
+                  << (move ? 1 : 0) << ',' << e.cellsMoved << ',' << e.seconds << '\n';
+    }
+
+  private:
+    const TimeControl& c_;
+    MPI_Comm comm_;
+    int size_;
+    bool on_; //!< one rank has no imbalance: checked only when a repartition is forced (threshold < 1)
+    bool repartitionable_ = true;
+    static constexpr double modelTolerance = 1.05; //!< the partitioner's (Repartition.cpp)
+    double busy_ = 0.0, waited_ = 0.0, start_ = 0.0;
+    std::unique_ptr<std::ofstream> csv_;
 };
 
 //! The progress line: on a terminal one updating line, otherwise a line every 5 seconds (rank 0).
@@ -151,6 +232,7 @@ LoopResult runTimeLoop(TimeSystem& system, const TimeControl& c, MPI_Comm comm, 
     {
         Progress progress(c.progress && rank == 0, c.endTime);
         StopOnSignal stop(c.checkpointOnSignal);
+        LoadBalancer balance(c, comm, s.steps);
         while (s.t < c.endTime * (1.0 - 1e-14) && s.steps < c.maxSteps)
         {
             if (c.checkpointOnSignal && (r.signal = StopOnSignal::received(comm)) != 0)
@@ -160,6 +242,7 @@ LoopResult runTimeLoop(TimeSystem& system, const TimeControl& c, MPI_Comm comm, 
                 system.checkpoint(s);
                 break;
             }
+            balance.startStep();
             double dt = chooseStep(system, c, s.t, s.dtPrev, s.steps, s.nextOutput, r.failure);
             if (!r.failure.empty())
                 break;
@@ -182,6 +265,7 @@ LoopResult runTimeLoop(TimeSystem& system, const TimeControl& c, MPI_Comm comm, 
                 break;
             }
             system.acceptStep(s.t, dt, iterations);
+            balance.endStep();
             if (steps)
                 *steps << s.steps + 1 << ',' << std::setprecision(12) << s.t + dt << ',' << dt << ',' << iterations
                        << ',' << attempt << '\n';
@@ -202,6 +286,8 @@ LoopResult runTimeLoop(TimeSystem& system, const TimeControl& c, MPI_Comm comm, 
                     steps->flush(); // the checkpoint's steps.csv is complete up to its step
                 system.checkpoint(s);
             }
+            if (s.t < c.endTime * (1.0 - 1e-14)) // none after the last step: a repartition then would be wasted
+                balance.check(system, s.steps, s.t, r);
             progress.report(s.steps, s.t, dt);
         }
     }

@@ -38,6 +38,12 @@ class TimeSystem
     virtual std::vector<double> totals() = 0;
     //! Writes a checkpoint of the persistent state with the loop's state (a system without checkpoints ignores it).
     virtual void checkpoint(const struct LoopState& /*loop*/) {}
+    /*! Moves the state onto a new partition of the ranks, balanced by the cells' measured costs; returns the number
+     *  of cells that changed rank (a system that cannot repartition returns -1). Must not change any result. */
+    virtual long repartition() { return -1; }
+    /*! The imbalance the system's cost model sees in the current partition (max / mean of the ranks' summed cell
+     *  costs; 1 if it has none). Collective. */
+    virtual double modelImbalance() { return 1.0; }
 };
 
 struct TimeControl
@@ -52,6 +58,30 @@ struct TimeControl
     std::string stepsCsv; //!< per accepted step: t, dt, iterations, halvings (rank 0; "" for none)
     double checkpointInterval = 0.0; //!< simulated time between TimeSystem::checkpoint calls (0: none)
     bool checkpointOnSignal = false; //!< SIGTERM / SIGINT: checkpoint at the end of the step and stop
+    long balanceInterval = 0;         //!< steps between load-balance checks (0: none)
+    double imbalanceThreshold = 1.15; //!< repartition when a check's imbalance exceeds it (and the model's too)
+    bool repartition = false;         //!< repartition (TimeSystem::repartition) or only measure
+    std::string balanceCsv;           //!< per check: step, t, imbalance, repartitioned (rank 0; "" for none)
+};
+
+/*! A load-balance check: the ranks' busy times (CPU time less the time spent waiting in collectives and halo
+ *  exchanges, mpi::waitSeconds) over the last balanceInterval steps, as max / mean. */
+struct BalanceCheck
+{
+    long step = 0;
+    double t = 0.0;
+    double imbalance = 1.0;
+    double modelImbalance = 1.0; //!< what the cost model predicts for the same partition
+};
+
+//! A repartition: when, the imbalance of the check that triggered it and of the next one, its cost.
+struct RepartitionEvent
+{
+    long step = 0;
+    double t = 0.0;
+    double before = 0.0, after = -1.0; //!< after < 0: no check followed
+    double seconds = 0.0;              //!< wall time of the repartition (the slowest rank)
+    long cellsMoved = 0;
 };
 
 /*! Where the loop is: all it needs to go on from here (a checkpoint keeps it with the system's persistent fields).
@@ -76,6 +106,8 @@ struct LoopResult
     std::string failure;                            //!< "" if the run completed
     bool stepCapped = false; //!< stopped by TimeControl::maxSteps before the end time
     int signal = 0;          //!< stopped (with a checkpoint) by this signal
+    std::vector<BalanceCheck> balanceChecks;
+    std::vector<RepartitionEvent> repartitions;
 };
 
 //! Runs the system from `from` to the end time or the step cap. Collective.

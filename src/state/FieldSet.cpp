@@ -1,6 +1,9 @@
 #include "state/FieldSet.hpp"
 
+#include <algorithm>
 #include <stdexcept>
+
+#include "core/Mpi.hpp"
 
 namespace unilag
 {
@@ -34,6 +37,7 @@ void FieldSet::swap(const std::string& a, const std::string& b)
 
 void FieldSet::halo(const std::string& name) const
 {
+    mpi::WaitTimer wait; // includes packing, which is small next to the wait for the slowest rank
     const Entry& e = entry(name);
     const bool cell = e.entity == Entity::Cell;
     auto owned = e.mv->offsetViewNonConst(cell ? mesh_->cellMap : mesh_->nodeMap, 0);
@@ -45,14 +49,16 @@ void FieldSet::copy(const std::string& from, const std::string& to) const
     Tpetra::deep_copy(*entry(to).mv, *entry(from).mv);
 }
 
-void FieldSet::migrate(std::shared_ptr<const DistributedMesh> newMesh)
+void FieldSet::migrate(std::shared_ptr<const DistributedMesh> newMesh, const std::vector<std::string>& carry)
 {
+    auto moves = [&](const std::string& name, const Entry& e)
+    { return e.lifetime == Lifetime::Persistent || std::find(carry.begin(), carry.end(), name) != carry.end(); };
     const Importer cells(mesh_->cellMap, newMesh->cellMap), nodes(mesh_->nodeMap, newMesh->nodeMap);
     for (auto& [name, e] : fields_)
     {
         const bool cell = e.entity == Entity::Cell;
         auto fresh = Teuchos::rcp(new MV(overlapMap(*newMesh, e.entity), e.mv->getNumVectors()));
-        if (e.lifetime == Lifetime::Persistent)
+        if (moves(name, e))
         {
             auto oldOwned = e.mv->offsetView(cell ? mesh_->cellMap : mesh_->nodeMap, 0);
             auto newOwned = fresh->offsetViewNonConst(cell ? newMesh->cellMap : newMesh->nodeMap, 0);
@@ -62,7 +68,7 @@ void FieldSet::migrate(std::shared_ptr<const DistributedMesh> newMesh)
     }
     mesh_ = std::move(newMesh);
     for (const auto& name : order_)
-        if (fields_.at(name).lifetime == Lifetime::Persistent)
+        if (moves(name, fields_.at(name)))
             halo(name);
 }
 

@@ -51,9 +51,10 @@ class FieldSet
     //! Copies every column and row of a field into another of the same shape.
     void copy(const std::string& from, const std::string& to) const;
 
-    /*! \brief Moves the fields onto a new distribution of the same global mesh: persistent fields are imported
-     *  by global id (owned rows, then the halo), scratch fields are reallocated. Collective. */
-    void migrate(std::shared_ptr<const DistributedMesh> newMesh);
+    /*! \brief Moves the fields onto a new distribution of the same global mesh: persistent fields, and the scratch
+     *  fields named in carry (a lagged value the next step reads), are imported by global id (owned rows, then the
+     *  halo); the other scratch fields are reallocated. Collective. */
+    void migrate(std::shared_ptr<const DistributedMesh> newMesh, const std::vector<std::string>& carry = {});
 
     //! Names of the fields of one lifetime, in the order they were added.
     std::vector<std::string> names(Lifetime lifetime) const;

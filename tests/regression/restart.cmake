@@ -22,6 +22,9 @@ restart_test(impact_np2_np1 interval:2.5e-6:70 2 1 ${INPUTS}/impact2d.yaml --set
              --set output.interval=0)
 restart_test(heat_order2_np1_np2 interval:0.5:240 1 2 ${INPUTS}/heat_conduction2d.yaml --set mesh.size=0.02
              --set scheme.order=2 --set output.interval=0)
+# repartitioned every 10 steps before and after the restart (parallel.partitioner sfc: cells really move)
+restart_test(sedov_order2_repartition_np2_np3 interval:0.4:480 2 3 ${RESTART_SEDOV} --set scheme.order=2
+             --set parallel.check_interval=10 --set parallel.imbalance_threshold=0 --set parallel.partitioner=sfc)
 restart_test(vortex_ars222_np3_np2 interval:0.5:28 3 2 ${INPUTS}/vortex2d.yaml --set scheme.order=2
              --set scheme.integrator=ars222 --set output.interval=0)
 

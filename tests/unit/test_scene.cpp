@@ -763,3 +763,30 @@ TEST(SceneErrors, SchemeSection)
               unilag::Integrator::Ars222);
     EXPECT_EQ(unilag::readScene(dir.write("scene.yaml", o2), {}).integrator, unilag::Integrator::Midpoint);
 }
+
+TEST(SceneErrors, ParallelSection)
+{
+    TempDir dir;
+    const unilag::Scene d = unilag::readScene(dir.write("scene.yaml", sedovScene()), {});
+    EXPECT_EQ(d.balanceInterval, 50); // the defaults: measure every 50 steps, repartition above 1.1
+    EXPECT_DOUBLE_EQ(d.imbalanceThreshold, 1.1);
+    EXPECT_TRUE(d.repartition);
+    EXPECT_EQ(d.partitioner, "multijagged");
+    const std::string parallel = replaced(
+        sedovScene(), "  time: {",
+        "  parallel: { check_interval: 20, imbalance_threshold: 1.2, repartition: false, partitioner: sfc }\n  time: {");
+    const unilag::Scene s = unilag::readScene(dir.write("scene.yaml", parallel), {});
+    EXPECT_EQ(s.balanceInterval, 20);
+    EXPECT_DOUBLE_EQ(s.imbalanceThreshold, 1.2);
+    EXPECT_FALSE(s.repartition);
+    EXPECT_EQ(s.partitioner, "sfc");
+    EXPECT_EQ(unilag::readScene(dir.write("scene.yaml", parallel), {"parallel.partitioner=rcb"}).partitioner, "rcb");
+    EXPECT_PRED2(contains, sceneError(dir, replaced(parallel, "partitioner: sfc", "partitioner: metis"),
+                                      "parallel.partitioner"),
+                 "multijagged, rcb, sfc");
+    sceneError(dir, replaced(parallel, "check_interval: 20", "check_interval: -1"), "parallel.check_interval");
+    sceneError(dir, replaced(parallel, "imbalance_threshold: 1.2", "imbalance_threshold: -1"),
+               "parallel.imbalance_threshold");
+    sceneError(dir, replaced(parallel, "repartition: false", "repartition: maybe"), "parallel.repartition");
+    sceneError(dir, replaced(parallel, "check_interval: 20", "check_every: 20"), "parallel.check_every");
+}

@@ -1,0 +1,145 @@
+// The time loop's load balance (src/solver/TimeLoop.cpp, LoadBalancer) on a toy system whose ranks take known times
+// per step: the busy time is measured without the time spent waiting in collectives, its imbalance (max / mean over
+// the ranks) triggers TimeSystem::repartition above the threshold and not below, and only when the system's cost
+// model sees it too; the check after a repartition reports the imbalance it left, and parallel.repartition false
+// only measures. `unit` runs these on one rank (where the imbalance is 1 by definition), unit_mesh_np2 and
+// unit_mesh_np3 on more (tests/CMakeLists.txt).
+#include <gtest/gtest.h>
+
+#include <mpi.h>
+#include <vector>
+
+#include "core/Mpi.hpp"
+#include "solver/TimeLoop.hpp"
+
+namespace
+{
+
+/*! Each step computes for `work` milliseconds of CPU time on this rank, then waits for the others in a reduction
+ *  (as the stable time step's allMin makes the real solver wait). repartition() sets every rank's work to the
+ *  mean. CPU time, as the load balance measures it: the test holds when the ranks share cores. */
+class Sleeper : public unilag::TimeSystem
+{
+  public:
+    explicit Sleeper(double work) : work_(work) {}
+    double prepareStep(double, long) override { return 0.01; }
+    void beginAttempts() override {}
+    bool attemptStep(double, double, int, int& iterations) override
+    {
+        iterations = 0;
+        const double t0 = unilag::mpi::cpuSeconds();
+        volatile double sink = 0.0;
+        while (unilag::mpi::cpuSeconds() - t0 < 1e-3 * work_)
+            sink = sink + 1.0;
+        unilag::mpi::allMin(MPI_COMM_WORLD, 1.0); // the slower rank's time is the others' wait
+        return true;
+    }
+    std::string failure(double, double, int) override { return "none"; }
+    void acceptStep(double, double, int) override {}
+    std::string collapse(double, double, long) override { return "none"; }
+    void write(int, double) override {}
+    std::vector<double> totals() override { return {0.0}; }
+    //! The model: the works themselves (unless blind), as GprSystem's cell costs predict its ranks' times.
+    double modelImbalance() override
+    {
+        double sum[1] = {work_};
+        unilag::mpi::allSum(MPI_COMM_WORLD, sum);
+        const double largest = unilag::mpi::allMax(MPI_COMM_WORLD, work_);
+        return blind ? 1.0 : largest * unilag::mpi::size(MPI_COMM_WORLD) / sum[0];
+    }
+    long repartition() override
+    {
+        double sum[1] = {work_};
+        unilag::mpi::allSum(MPI_COMM_WORLD, sum);
+        work_ = sum[0] / unilag::mpi::size(MPI_COMM_WORLD);
+        ++calls;
+        return 7;
+    }
+    int calls = 0;
+    bool blind = false; //!< a cost model that does not see the imbalance
+
+  private:
+    double work_;
+};
+
+unilag::TimeControl control(bool repartition)
+{
+    unilag::TimeControl c;
+    c.endTime = 0.31; // 31 steps of 0.01: checks after steps 10, 20 and 30 (none after the last)
+    c.initialTimeStep = 0.01;
+    c.maxGrowth = 1.0;
+    c.progress = false;
+    c.balanceInterval = 10;
+    c.imbalanceThreshold = 1.15;
+    c.repartition = repartition;
+    return c;
+}
+
+int ranks() { return unilag::mpi::size(MPI_COMM_WORLD); }
+int rank() { return unilag::mpi::rank(MPI_COMM_WORLD); }
+
+TEST(LoadBalance, ImbalanceTriggersARepartitionThatRemovesIt)
+{
+    if (ranks() < 2)
+        GTEST_SKIP() << "needs two ranks";
+    Sleeper s(rank() == 0 ? 6.0 : 2.0); // rank 0 takes 3x the others: imbalance 6 / mean
+    const auto r = unilag::runTimeLoop(s, control(true), MPI_COMM_WORLD);
+    const double expected = 6.0 * ranks() / (6.0 + 2.0 * (ranks() - 1));
+    ASSERT_EQ(r.balanceChecks.size(), 3u);
+    EXPECT_NEAR(r.balanceChecks[0].imbalance, expected, 0.15 * expected); // the wait is not counted as work
+    ASSERT_EQ(r.repartitions.size(), 1u); // after the first check only: then the ranks are balanced
+    EXPECT_EQ(s.calls, 1);
+    EXPECT_EQ(r.repartitions[0].step, 10);
+    EXPECT_EQ(r.repartitions[0].cellsMoved, 7);
+    EXPECT_DOUBLE_EQ(r.repartitions[0].before, r.balanceChecks[0].imbalance);
+    EXPECT_DOUBLE_EQ(r.repartitions[0].after, r.balanceChecks[1].imbalance);
+    EXPECT_LT(r.repartitions[0].after, 1.15);
+}
+
+TEST(LoadBalance, MeasureOnlyNeverRepartitions)
+{
+    if (ranks() < 2)
+        GTEST_SKIP() << "needs two ranks";
+    Sleeper s(rank() == 0 ? 6.0 : 2.0);
+    const auto r = unilag::runTimeLoop(s, control(false), MPI_COMM_WORLD);
+    ASSERT_EQ(r.balanceChecks.size(), 3u);
+    for (const auto& c : r.balanceChecks)
+        EXPECT_GT(c.imbalance, 1.15);
+    EXPECT_TRUE(r.repartitions.empty());
+    EXPECT_EQ(s.calls, 0);
+}
+
+TEST(LoadBalance, AnImbalanceTheModelDoesNotSeeIsLeftAlone)
+{
+    if (ranks() < 2)
+        GTEST_SKIP() << "needs two ranks";
+    Sleeper s(rank() == 0 ? 6.0 : 2.0);
+    s.blind = true; // as a rank slowed by another process: no partition by the model would help
+    const auto r = unilag::runTimeLoop(s, control(true), MPI_COMM_WORLD);
+    ASSERT_EQ(r.balanceChecks.size(), 3u);
+    EXPECT_GT(r.balanceChecks[0].imbalance, 1.15);
+    EXPECT_DOUBLE_EQ(r.balanceChecks[0].modelImbalance, 1.0);
+    EXPECT_EQ(s.calls, 0);
+}
+
+TEST(LoadBalance, BalancedRanksStayAsTheyAre)
+{
+    Sleeper s(4.0);
+    const auto r = unilag::runTimeLoop(s, control(true), MPI_COMM_WORLD);
+    EXPECT_EQ(r.balanceChecks.size(), ranks() > 1 ? 3u : 0u); // one rank: nothing to balance, no checks
+    for (const auto& c : r.balanceChecks)
+        EXPECT_LT(c.imbalance, 1.15);
+    EXPECT_EQ(s.calls, 0);
+}
+
+TEST(LoadBalance, ThresholdBelowOneRepartitionsAtEveryCheck)
+{
+    Sleeper s(1.0);
+    auto c = control(true);
+    c.imbalanceThreshold = 0.0; // as the repartition tests force it, on any number of ranks
+    const auto r = unilag::runTimeLoop(s, c, MPI_COMM_WORLD);
+    EXPECT_EQ(s.calls, 3);
+    EXPECT_EQ(r.repartitions.size(), 3u);
+}
+
+} // namespace
