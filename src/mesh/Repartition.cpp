@@ -4,6 +4,7 @@
 #include <cmath>
 #include <numeric>
 #include <stdexcept>
+#include <utility>
 
 #include <Zoltan2_PartitioningProblem.hpp>
 #include <Zoltan2_XpetraMultiVectorAdapter.hpp>

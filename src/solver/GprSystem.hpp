@@ -121,9 +121,10 @@ template <int D, class P> class GprSystem : public TimeSystem
         op_.advance(lagged());
     }
 
-    /*! Zoltan2 on the cells' current centroids, weighted by cellCosts(); the mesh rebuilt on the new owners, the
-     *  fields migrated (with the lagged node velocities), the operator's node lists and the writer's topology
-     *  renewed, geometry and EOS recomputed: the next step is bitwise what it would have been. Collective. */
+    /*! New owners by the scene's partitioner (balancedOwners: Zoltan2 on the cells' current centroids, or the
+     *  curve), weighted by cellCosts(); the mesh rebuilt on them, the fields migrated (with the lagged node
+     *  velocities), the operator's node lists and the writer's topology renewed, geometry and EOS recomputed: the
+     *  next step is bitwise what it would have been. Collective. */
     long repartition() override
     {
         const auto& old = *md_.mesh;
