@@ -107,6 +107,9 @@ enum ThermalBc : int
     ThermalIsothermal = 1 //!< imposed wall temperature
 };
 
+//! The most planes one slip-wall group may span and keep fixed normals (a box's six walls as one group).
+constexpr int MaxWallPlanes = 6;
+
 //! Boundary conditions by boundary group id (the group of a face is MeshView::cellFaceGroup).
 struct BoundaryView
 {
@@ -114,30 +117,43 @@ struct BoundaryView
     Kokkos::View<const double* [3], MemSpace> value; //!< group -> imposed velocity or traction, or pressure in 0
     View<const int*> thermal;                        //!< group -> ThermalBc (heat variants only)
     View<const double*> temperature;                 //!< group -> isothermal wall temperature
-    //! group -> outward unit normal of a flat slip wall or symmetry plane (the mesh as built), 0 if curved; may be empty
-    Kokkos::View<const double* [3], MemSpace> plane;
+    /*! group -> outward unit normals of the planes a slip wall or symmetry group spans (the mesh as built), zero
+     *  rows after the last; all zero if curved. May be empty. */
+    Kokkos::View<const double* [MaxWallPlanes][3], MemSpace> plane;
 };
 
 /*! The outward normal a slip wall imposes at a face of group g whose current outward area vector is `area`: the
- *  group's fixed plane normal, scaled to |area|, where it is flat, else `area`. Normals from the moving faces
- *  let a plane's round-off kinks grow: a node sliding along its tilted faces leaves the plane further, each step
- *  (docs/gpr-model.md 3.3). */
+ *  normal of the group's plane the face lies in (the one closest to `area`), scaled to |area|, where the group is
+ *  made of planes, else `area`. Normals from the moving faces let a plane's round-off kinks grow: a node sliding
+ *  along its tilted faces leaves the plane further, each step (docs/gpr-model.md 3.3). */
 template <int D>
 KOKKOS_INLINE_FUNCTION Vec<D> wallNormal(const BoundaryView& bc, int g, const Vec<D>& area)
 {
     if (g >= int(bc.plane.extent(0)))
         return area;
-    double n2 = 0.0, a2 = 0.0;
+    double a2 = 0.0;
     for (int d = 0; d < D; ++d)
-    {
-        n2 += bc.plane(g, d) * bc.plane(g, d);
         a2 += area[d] * area[d];
+    const double a = Kokkos::Experimental::sqrt(a2);
+    // a face tilts off its plane by round-off; 0.9 keeps planes at right angles (or 25 degrees) apart
+    int best = -1;
+    double bestCos = 0.9;
+    for (int p = 0; p < MaxWallPlanes; ++p)
+    {
+        double c = 0.0;
+        for (int d = 0; d < D; ++d)
+            c += bc.plane(g, p, d) * area[d];
+        if (c > bestCos * a)
+        {
+            bestCos = c / a;
+            best = p;
+        }
     }
-    if (!(n2 > 0.0))
+    if (best < 0)
         return area;
     Vec<D> n;
     for (int d = 0; d < D; ++d)
-        n[d] = Kokkos::Experimental::sqrt(a2) * bc.plane(g, d);
+        n[d] = a * bc.plane(g, best, d);
     return n;
 }
 

@@ -65,6 +65,14 @@ void allMax(MPI_Comm comm, double* v, int n)
     MPI_Allreduce(MPI_IN_PLACE, v, n, MPI_DOUBLE, MPI_MAX, comm);
 }
 
+std::vector<double> allGather(MPI_Comm comm, const std::vector<double>& v)
+{
+    WaitTimer wait;
+    std::vector<double> all(v.size() * std::size_t(size(comm)));
+    MPI_Allgather(v.data(), int(v.size()), MPI_DOUBLE, all.data(), int(v.size()), MPI_DOUBLE, comm);
+    return all;
+}
+
 void allSum(MPI_Comm comm, double* v, int n)
 {
     WaitTimer wait;

@@ -10,6 +10,7 @@
 #include <mpi.h>
 
 #include <string>
+#include <vector>
 
 #include <Teuchos_Comm.hpp>
 #include <Teuchos_RCP.hpp>
@@ -52,6 +53,8 @@ double allMax(MPI_Comm comm, double v);
 void allMax(MPI_Comm comm, double* v, int n);
 //! Sums n values in place over the ranks.
 void allSum(MPI_Comm comm, double* v, int n);
+//! Every rank's v (the same length on every rank), in rank order, on every rank.
+std::vector<double> allGather(MPI_Comm comm, const std::vector<double>& v);
 template <int N> void allSum(MPI_Comm comm, double (&v)[N])
 {
     allSum(comm, v, N);

@@ -1,5 +1,6 @@
 #include "mesh/BoundaryPlanes.hpp"
 
+#include <algorithm>
 #include <cmath>
 
 namespace unilag
@@ -41,53 +42,86 @@ double length(const std::array<double, 3>& v)
     return std::sqrt(v[0] * v[0] + v[1] * v[1] + v[2] * v[2]);
 }
 
+//! One plane of a boundary group: the unit normal of its face of lowest key (global cell id x nv + local face).
+struct Plane
+{
+    double key;
+    std::array<double, 3> normal;
+};
+
+/*! Adds a face to the plane it lies in (unit normals equal to the round-off of the mesh's coordinates), keeping the
+ *  lower key's normal; false where that would make more than maxPlanes planes (a curved or folded boundary). */
+bool joinPlane(std::vector<Plane>& planes, const Plane& face, int maxPlanes)
+{
+    for (Plane& p : planes)
+    {
+        const std::array<double, 3> d{face.normal[0] - p.normal[0], face.normal[1] - p.normal[1],
+                                      face.normal[2] - p.normal[2]};
+        if (length(d) <= 1e-9)
+        {
+            if (face.key < p.key)
+                p = face;
+            return true;
+        }
+    }
+    planes.push_back(face);
+    return int(planes.size()) <= maxPlanes;
+}
+
 } // namespace
 
-std::vector<std::array<double, 3>> flatBoundaryNormals(const DistributedMesh& dm, MPI_Comm comm)
+std::vector<std::vector<std::array<double, 3>>> flatBoundaryPlanes(const DistributedMesh& dm, MPI_Comm comm,
+                                                                  int maxPlanes)
 {
     const int ng = int(dm.boundaryNames.size()), nv = dm.nv;
-    // the group's normal: that of its face of lowest (global cell id, local face), whichever rank holds it, so that
-    // it is the same on any partition, bit for bit
-    std::vector<double> key(std::size_t(ng), 1e300);
-    std::vector<std::array<double, 3>> first(std::size_t(ng), {0.0, 0.0, 0.0});
+    // this rank's planes of each group (a plane: the unit normal of its face of lowest global key), or overflow
+    std::vector<std::vector<Plane>> local{std::size_t(ng)};
+    std::vector<bool> curved(std::size_t(ng), false);
     for (LO i = 0; i < dm.nOwnedCells; ++i)
         for (int j = 0; j < nv; ++j)
-            if (const int g = dm.cellFaceGroupHost[std::size_t(nv) * i + j]; g >= 0)
-            {
-                const double k = double(dm.cellGid[i]) * nv + j;
-                if (k < key[g])
-                {
-                    key[g] = k;
-                    first[g] = faceArea(dm, i, j);
-                }
-            }
-    std::vector<double> sum(3 * std::size_t(ng) + 1, 0.0), bent(std::size_t(ng) + 1, 0.0);
-    for (int g = 0; g < ng; ++g)
-        if (key[g] == mpi::allMin(comm, key[g]) && key[g] < 1e300)
-            for (int d = 0; d < 3; ++d)
-                sum[3 * g + d] = first[g][d] / length(first[g]);
-    mpi::allSum(comm, sum.data(), int(sum.size())); // one rank adds its normal, the others 0
-    std::vector<std::array<double, 3>> normal(ng, {0.0, 0.0, 0.0});
-    for (int g = 0; g < ng; ++g)
-        normal[g] = {sum[3 * g], sum[3 * g + 1], sum[3 * g + 2]};
-    // flat: every face's unit normal is that one (to the round-off of the mesh's coordinates)
-    for (LO i = 0; i < dm.nOwnedCells; ++i)
-        for (int j = 0; j < nv; ++j)
-            if (const int g = dm.cellFaceGroupHost[std::size_t(nv) * i + j]; g >= 0)
+            if (const int g = dm.cellFaceGroupHost[std::size_t(nv) * i + j]; g >= 0 && !curved[g])
             {
                 const auto a = faceArea(dm, i, j);
                 const double len = length(a);
-                double dev = 0.0;
-                for (int d = 0; d < 3; ++d)
-                    dev += std::pow(a[d] / len - normal[g][d], 2);
-                if (!(std::sqrt(dev) <= 1e-9))
-                    bent[g] = 1.0;
+                const Plane face{double(dm.cellGid[i]) * nv + j, {a[0] / len, a[1] / len, a[2] / len}};
+                curved[g] = !joinPlane(local[g], face, maxPlanes);
             }
-    mpi::allSum(comm, bent.data(), int(bent.size()));
+    // gather them (key, normal; key -1 = none, -2 = curved) and merge in key order, the same on every rank
+    const std::size_t row = 4 * std::size_t(maxPlanes), width = row * std::size_t(ng);
+    std::vector<double> mine(width, -1.0);
     for (int g = 0; g < ng; ++g)
-        if (bent[g] > 0.0)
-            normal[g] = {0.0, 0.0, 0.0};
-    return normal;
+        if (curved[g])
+            mine[row * g] = -2.0;
+        else
+            for (std::size_t p = 0; p < local[g].size(); ++p)
+            {
+                double* r = &mine[row * g + 4 * p];
+                r[0] = local[g][p].key;
+                std::copy(local[g][p].normal.begin(), local[g][p].normal.end(), r + 1);
+            }
+    const std::vector<double> all = mpi::allGather(comm, mine);
+    std::vector<std::vector<std::array<double, 3>>> planes{std::size_t(ng)};
+    for (int g = 0; g < ng; ++g)
+    {
+        std::vector<Plane> found;
+        bool bent = false;
+        for (std::size_t r = 0; r < all.size() / width; ++r)
+            for (int p = 0; p < maxPlanes; ++p)
+            {
+                const double* e = &all[width * r + row * g + 4 * std::size_t(p)];
+                bent = bent || e[0] == -2.0;
+                if (e[0] >= 0.0)
+                    found.push_back({e[0], {e[1], e[2], e[3]}});
+            }
+        std::sort(found.begin(), found.end(), [](const Plane& a, const Plane& b) { return a.key < b.key; });
+        std::vector<Plane> merged;
+        for (const Plane& p : found)
+            bent = bent || !joinPlane(merged, p, maxPlanes);
+        if (!bent)
+            for (const Plane& p : merged)
+                planes[g].push_back(p.normal);
+    }
+    return planes;
 }
 
 } // namespace unilag

@@ -97,13 +97,14 @@ template <int D, class P> std::string setupBoundaries(GprModel<D, P>& md)
     for (const auto& [name, spec] : scene.boundaries)
         if (std::find(dm.boundaryNames.begin(), dm.boundaryNames.end(), name) == dm.boundaryNames.end())
             return scene.file + ": key 'boundaries." + name + "': the mesh has no boundary group '" + name + "'";
-    // flat slip walls and symmetry planes impose their fixed normal (wallNormal, Physics.hpp)
-    Kokkos::View<double* [3], MemSpace> plane("unilag::bcPlane", std::max(ng, 1));
-    auto ph = Kokkos::create_mirror_view(plane);
-    const auto normals = flatBoundaryNormals(dm, md.comm);
+    // slip walls and symmetry planes made of planes impose their fixed normals (wallNormal, Physics.hpp)
+    Kokkos::View<double* [MaxWallPlanes][3], MemSpace> plane("unilag::bcPlane", std::max(ng, 1));
+    auto ph = Kokkos::create_mirror_view(plane); // zero-initialised
+    const auto planes = flatBoundaryPlanes(dm, md.comm, MaxWallPlanes);
     for (int g = 0; g < ng; ++g)
-        for (int d = 0; d < 3; ++d)
-            ph(g, d) = th(g) == BcSlipWall ? normals[g][d] : 0.0;
+        for (std::size_t p = 0; p < planes[g].size() && th(g) == BcSlipWall; ++p)
+            for (int d = 0; d < 3; ++d)
+                ph(g, p, d) = planes[g][p][d];
     Kokkos::deep_copy(type, th);
     Kokkos::deep_copy(value, vh);
     Kokkos::deep_copy(thermal, thermalH);

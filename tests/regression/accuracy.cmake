@@ -51,6 +51,13 @@ add_test(NAME sedov2d_symmetry_planes COMMAND ${PYTHON} ${SCRIPTS}/sedov_symmetr
          ${WORK}/sedov2d_symmetry 6.9 --set mesh.size=0.0072 --set scheme.order=1 --set time.end=0.65
          --set output.interval=0.65)
 set_tests_properties(sedov2d_symmetry_planes PROPERTIES LABELS regression)
+# The same on walls of four planes in one slip-wall group (tests/scenes/sedov2d_box_walls.yaml, the unit square, E =
+# 0.25 at a corner, 92k triangles, order 1, t = 0.8): the side nodes stay on their sides (measured 2e-32), max density
+# <= 6.9 (measured 6.59), no step collapse (measured 1/1.41). While such a group took its normals from the moving
+# faces: max density 11.5 and 8210 steps instead of 1981. 25-50 s on one thread.
+add_test(NAME sedov2d_box_walls_one_group COMMAND ${PYTHON} ${SCRIPTS}/sedov_symmetry.py ${UNILAG}
+         ${SCENES}/sedov2d_box_walls.yaml ${WORK}/sedov2d_box_walls 6.9 --set mesh.size=0.005 --set scheme.order=1)
+set_tests_properties(sedov2d_box_walls_one_group PROPERTIES LABELS regression)
 
 # GPR hydrodynamic limit (tests/scripts/hydro_limit.py): the full model with tau1 = 1e-14 and c_sh = 0.1 (of the
 # order of the shocked gas' sound speed; inputs/sedov2d_gpr.yaml) against the Euler solver, 2D Sedov on 1k triangles,

@@ -10,11 +10,7 @@
 set(FORCED --set parallel.check_interval=10 --set parallel.imbalance_threshold=0 --set parallel.partitioner=sfc)
 function(repartition_run dim variant order np)
   set(name repartition${dim}d_${variant}_o${order}_np${np})
-  if(order STREQUAL "ars")
-    set(scheme --set scheme.order=2 --set scheme.integrator=ars222)
-  else()
-    set(scheme --set scheme.order=${order})
-  endif()
+  scheme_args(${order} scheme)
   add_test(NAME ${name} COMMAND ${MPI_RUN} ${np} ${UNILAG} run ${SCENES}/variants${dim}d.yaml --quiet --check
            ${VARIANT_${variant}} ${scheme} ${FORCED} --output ${WORK}/${name})
   set_tests_properties(${name} PROPERTIES PROCESSORS ${np} FIXTURES_SETUP repartition${dim}d_${variant}_o${order}
