@@ -255,8 +255,10 @@ KOKKOS_INLINE_FUNCTION Sym3 transportAndRelax(const Sym3& G0, const Sym3& dT, do
  *  bisection bracket: one eigen-decomposition and a few one-panel quadratures per call. Negligible flow
  *  (kdt < 1e-8 even at sigma_bar(G*), i.e. well below the yield stress) costs only the von Mises stress of G*.
  *  det G is preserved to round-off (to O(kdt^2) ~ 1e-16 on the negligible-flow path).
- *  work, if given, is incremented by the evaluations of Phi, plus one for the eigen-decomposition: the cost of the
- *  cell above the negligible-flow path, which the load balance weighs (GprSystem::cellCosts). */
+ *  work, if given, is incremented by the cell's cost above the negligible-flow path, which the load balance weighs
+ *  (GprSystem::cellCosts): one for the eigen-decomposition, and per evaluation of Phi one plus its quadrature panels
+ *  (1 to about 10: strongly relaxing cells take more). Counting evaluations alone left ranks 1.3x apart in time at
+ *  equal counts on the impact scene (docs/parallel.md 4). */
 KOKKOS_INLINE_FUNCTION Sym3 relaxPlasticStrain(const Sym3& Gs, double rho, double csh, double dt, double tau10,
                                                double sigmaY, double n, double* hint = nullptr, double* work = nullptr)
 {
@@ -276,7 +278,7 @@ KOKKOS_INLINE_FUNCTION Sym3 relaxPlasticStrain(const Sym3& Gs, double rho, doubl
         return Gs - kmath::exp(lnKdt0) * symProduct(Gs, dev(Gs));
     }
     const Eigen3 e = eigen(Gs);
-    double evaluations = 1.0;
+    double evaluations = 1.0; // the work counted (see above)
     const double lmin = e.value[0], lmax = e.value[2];
     if (!(lmin > 0.0) || lmin == lmax)
         return Gs;
@@ -312,7 +314,9 @@ KOKKOS_INLINE_FUNCTION Sym3 relaxPlasticStrain(const Sym3& Gs, double rho, doubl
                 return acc + (s - a) + rmean * kmath::exp(-a) * kmath::expm1(-(s - a));
             acc += detail::relaxQuadrature(rh, q, c, a, a + 2.0);
             a += 2.0;
+            evaluations += 1.0;
         }
+        evaluations += 1.0;
         return acc + detail::relaxQuadrature(rh, q, c, a, s);
     };
     // Phi(y) and dPhi/dy

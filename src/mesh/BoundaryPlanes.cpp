@@ -71,7 +71,7 @@ bool joinPlane(std::vector<Plane>& planes, const Plane& face, int maxPlanes)
 } // namespace
 
 std::vector<std::vector<std::array<double, 3>>> flatBoundaryPlanes(const DistributedMesh& dm, MPI_Comm comm,
-                                                                  int maxPlanes)
+                                                                   int maxPlanes)
 {
     const int ng = int(dm.boundaryNames.size()), nv = dm.nv;
     // this rank's planes of each group (a plane: the unit normal of its face of lowest global key), or overflow

@@ -18,6 +18,6 @@ namespace unilag
  *  maxPlanes planes (a curved boundary). Each plane's normal is that of its face of lowest (global cell id, local
  *  face), so the list is the same on any partition, bit for bit. Collective. */
 std::vector<std::vector<std::array<double, 3>>> flatBoundaryPlanes(const DistributedMesh& dm, MPI_Comm comm,
-                                                                  int maxPlanes);
+                                                                   int maxPlanes);
 
 } // namespace unilag

@@ -145,24 +145,62 @@ template <int D, class P> class GprSystem : public TimeSystem
         op_.refreshGeometry();
         op_.computeAux(lagged());
         stepsSincePartition_ = 0;
+        stepsAtLastCall_ = intervalSteps_ = 0; // plastic_work starts again from zero on the new mesh
+        workAtLastCall_.clear();
         return long(moved[0]);
     }
 
     double modelImbalance() override { return costImbalance(*md_.mesh, cellCosts()); }
 
-    /*! Each owned cell's cost per step, in units of a cell-step without plastic flow: 1 + plasticEvaluationCost
-     *  times its plastic-law evaluations per step since the last partition (GprModel::plasticWork). */
+    /*! Each owned cell's cost per step, in units of a cell-step without plastic flow: 1 + plasticWorkCost_ times its
+     *  units of plastic work per step (GprModel::plasticWork) over the last load-balance interval (costTerms), or
+     *  since the last partition where no interval has ended since: the plastic zone moves, and a longer average
+     *  would place it where it was. */
     std::vector<double> cellCosts() const
     {
         std::vector<double> cost(md_.mesh->nOwnedCells, 1.0);
         if constexpr (P::plastic)
         {
+            const bool interval = intervalSteps_ > 0 && intervalWork_.size() == cost.size();
             auto work = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), md_.plasticWork());
-            const double perStep = plasticEvaluationCost / double(std::max(stepsSincePartition_, 1L));
+            const double perStep =
+                plasticWorkCost_ / double(std::max(interval ? intervalSteps_ : stepsSincePartition_, 1L));
             for (std::size_t i = 0; i < cost.size(); ++i)
-                cost[i] += perStep * work(i);
+                cost[i] += perStep * (interval ? intervalWork_[i] : work(i));
         }
         return cost;
+    }
+
+    //! The cost terms: cell-steps, and with plasticity units of plastic work (weight plasticWorkCost_, fitted).
+    std::vector<double> costWeights() const override
+    {
+        return P::plastic ? std::vector<double>{1.0, plasticWorkCost_} : std::vector<double>{1.0};
+    }
+    void setCostWeights(const std::vector<double>& w) override
+    {
+        if (w.size() > 1)
+            plasticWorkCost_ = w[1];
+    }
+    //! Also keeps each cell's plastic work over the interval, for cellCosts.
+    std::vector<double> costTerms() override
+    {
+        const LO n = md_.mesh->nOwnedCells;
+        const double cellSteps = double(n) * double(stepsSincePartition_ - stepsAtLastCall_);
+        intervalSteps_ = stepsSincePartition_ - stepsAtLastCall_;
+        stepsAtLastCall_ = stepsSincePartition_;
+        if constexpr (!P::plastic)
+            return {cellSteps};
+        auto work = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), md_.plasticWork());
+        workAtLastCall_.resize(std::size_t(n), 0.0);
+        intervalWork_.resize(std::size_t(n));
+        double total = 0.0;
+        for (LO i = 0; i < n; ++i)
+        {
+            intervalWork_[i] = work(i) - workAtLastCall_[i];
+            workAtLastCall_[i] = work(i);
+            total += intervalWork_[i];
+        }
+        return {cellSteps, total};
     }
 
     std::string collapse(double t, double dt, long step) override { return unilag::collapse(md_, t, dt, step); }
@@ -302,10 +340,13 @@ template <int D, class P> class GprSystem : public TimeSystem
     bool ars222_; //!< scheme.integrator: ars222 (order 2)
     bool checkEveryNode_;
     long stepsSincePartition_ = 0;
-    /*! The time of one plastic-law evaluation over that of a cell-step without plastic flow. Measured on the impact
-     *  scene (4.7k cells, one thread): 1.73 us per cell-step with the yield stress out of reach, 0.41 us more per
-     *  evaluation (about 10 per cell-step at yield: 2 per Picard iteration); docs/parallel.md. */
-    static constexpr double plasticEvaluationCost = 0.24;
+    /*! The time of one unit of plastic work (relaxPlasticStrain's count: an eigen-decomposition, a Phi evaluation
+     *  or a quadrature panel) over that of a cell-step without plastic flow: the start of the fit. Fitted on one
+     *  rank through the impact scene (4.7k cells, one thread, a check every 25 steps): 0.08-0.12; docs/parallel.md. */
+    static constexpr double plasticWorkCost = 0.1;
+    double plasticWorkCost_ = plasticWorkCost; //!< refitted at each load-balance check (CostFit)
+    long stepsAtLastCall_ = 0, intervalSteps_ = 0; //!< costTerms: stepsSincePartition_ at its last call, and since
+    std::vector<double> workAtLastCall_, intervalWork_; //!< costTerms: plastic_work at its last call, and since
     std::unique_ptr<io::XdmfWriter> writer_;
     StageResult stage_;
     static constexpr int maxFallbackRounds = 4;

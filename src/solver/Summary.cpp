@@ -65,12 +65,13 @@ namespace
  *  moved, seconds. */
 std::string loadBalanceJson(const LoopResult& r)
 {
-    double sum = 0.0, worst = 0.0, model = 0.0;
+    double sum = 0.0, worst = 0.0, model = 0.0, spread = 0.0;
     for (const BalanceCheck& c : r.balanceChecks)
     {
         sum += c.imbalance;
         worst = std::max(worst, c.imbalance);
         model += c.modelImbalance;
+        spread += c.speedSpread;
     }
     std::ostringstream os;
     os << "{\"checks\": " << r.balanceChecks.size()
@@ -78,6 +79,8 @@ std::string loadBalanceJson(const LoopResult& r)
        << ", \"imbalance_max\": " << jsonNumber(worst)
        << ", \"imbalance_last\": " << jsonNumber(r.balanceChecks.back().imbalance)
        << ", \"model_imbalance_mean\": " << jsonNumber(model / double(r.balanceChecks.size()))
+       << ", \"work_cost_last\": " << jsonNumber(r.balanceChecks.back().workCost)
+       << ", \"speed_spread_mean\": " << jsonNumber(spread / double(r.balanceChecks.size()))
        << ", \"repartitions\": [";
     for (std::size_t k = 0; k < r.repartitions.size(); ++k)
     {

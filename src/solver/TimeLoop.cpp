@@ -12,6 +12,7 @@
 
 #include "core/Format.hpp"
 #include "core/Mpi.hpp"
+#include "solver/CostFit.hpp"
 
 namespace unilag
 {
@@ -73,7 +74,8 @@ class LoadBalancer
     {
         if (!on_ || mpi::rank(comm) != 0 || c_.balanceCsv.empty())
             return;
-        std::vector<std::string> kept = {"step,t,imbalance,model_imbalance,repartitioned,cells_moved,seconds"};
+        std::vector<std::string> kept = {
+            "step,t,imbalance,model_imbalance,repartitioned,cells_moved,seconds,work_cost,speed_spread"};
         std::ifstream old(fromStep > 0 ? c_.balanceCsv : std::string());
         for (std::string line; std::getline(old, line);)
             if (line.rfind("step,", 0) != 0 && std::strtol(line.c_str(), nullptr, 10) <= fromStep)
@@ -99,12 +101,18 @@ class LoadBalancer
     {
         if (!on_ || step % c_.balanceInterval != 0)
             return;
-        double sum[1] = {busy_};
-        mpi::allSum(comm_, sum);
-        const double imbalance = sum[0] > 0.0 ? mpi::allMax(comm_, busy_) * size_ / sum[0] : 1.0;
+        const std::vector<double> busy = refit(system);
+        double sum = 0.0, largest = 0.0;
+        for (double b : busy)
+        {
+            sum += b;
+            largest = std::max(largest, b);
+        }
+        const double imbalance = sum > 0.0 ? largest * size_ / sum : 1.0;
         busy_ = 0.0;
         const double model = system.modelImbalance();
-        r.balanceChecks.push_back({step, t, imbalance, model});
+        const auto weights = system.costWeights();
+        r.balanceChecks.push_back({step, t, imbalance, model, weights.size() > 1 ? weights[1] : 0.0, spread_});
         if (!r.repartitions.empty() && r.repartitions.back().after < 0.0)
             r.repartitions.back().after = imbalance;
         RepartitionEvent e{step, t, imbalance};
@@ -122,10 +130,56 @@ class LoadBalancer
         }
         if (csv_)
             *csv_ << step << ',' << std::setprecision(12) << t << ',' << imbalance << ',' << model << ','
-                  << (move ? 1 : 0) << ',' << e.cellsMoved << ',' << e.seconds << '\n';
+                  << (move ? 1 : 0) << ',' << e.cellsMoved << ',' << e.seconds << ',' << r.balanceChecks.back().workCost
+                  << ',' << spread_ << '\n';
     }
 
   private:
+    //! Every rank's busy time since the last check, in rank order; the system's cost weights refitted to them.
+    std::vector<double> refit(TimeSystem& system)
+    {
+        std::vector<double> mine = system.costTerms();
+        const std::size_t k = mine.size();
+        mine.insert(mine.begin(), busy_);
+        const std::vector<double> all = mpi::allGather(comm_, mine);
+        const auto ranks = std::size_t(size_);
+        std::vector<double> busy(ranks);
+        std::vector<std::vector<double>> terms(ranks);
+        for (std::size_t p = 0; p < busy.size(); ++p)
+        {
+            busy[p] = all[(k + 1) * p];
+            terms[p].assign(all.begin() + long((k + 1) * p + 1), all.begin() + long((k + 1) * (p + 1)));
+        }
+        if (k > 1)
+        {
+            if (!fit_)
+                fit_ = std::make_unique<CostFit>(system.costWeights());
+            fit_->add(busy, terms);
+            system.setCostWeights(fit_->weights());
+        }
+        spread_ = k > 0 ? speedSpread(busy, terms, system.costWeights()) : 0.0;
+        return busy;
+    }
+
+    /*! max / min over the ranks of the busy time per unit of modelled cost: 1 where the model explains the ranks'
+     *  times; above, the ranks ran at different speeds (a shared core), which no partition by the model evens. */
+    static double speedSpread(const std::vector<double>& busy, const std::vector<std::vector<double>>& terms,
+                              const std::vector<double>& weights)
+    {
+        double fastest = 1e300, slowest = 0.0;
+        for (std::size_t p = 0; p < busy.size(); ++p)
+        {
+            double cost = 0.0;
+            for (std::size_t i = 0; i < weights.size() && i < terms[p].size(); ++i)
+                cost += weights[i] * terms[p][i];
+            if (!(cost > 0.0))
+                return 0.0;
+            fastest = std::min(fastest, busy[p] / cost);
+            slowest = std::max(slowest, busy[p] / cost);
+        }
+        return fastest > 0.0 ? slowest / fastest : 0.0;
+    }
+
     const TimeControl& c_;
     MPI_Comm comm_;
     int size_;
@@ -134,6 +188,8 @@ class LoadBalancer
     static constexpr double modelTolerance = 1.05; //!< the partitioner's (Repartition.cpp)
     double busy_ = 0.0, waited_ = 0.0, start_ = 0.0;
     std::unique_ptr<std::ofstream> csv_;
+    std::unique_ptr<CostFit> fit_; //!< the cost model's weights, fitted to the checks (when it has several)
+    double spread_ = 0.0;          //!< the last check's speedSpread
 };
 
 //! The progress line: on a terminal one updating line, otherwise a line every 5 seconds (rank 0).

@@ -44,6 +44,12 @@ class TimeSystem
     /*! The imbalance the system's cost model sees in the current partition (max / mean of the ranks' summed cell
      *  costs; 1 if it has none). Collective. */
     virtual double modelImbalance() { return 1.0; }
+    /*! The cost model's weights: what one unit of each cost term costs in units of the first (1); empty if the
+     *  system has no model to fit (CostFit). */
+    virtual std::vector<double> costWeights() const { return {}; }
+    virtual void setCostWeights(const std::vector<double>& /*weights*/) {}
+    //! This rank's cost terms (one per weight) since the last call or repartition.
+    virtual std::vector<double> costTerms() { return {}; }
 };
 
 struct TimeControl
@@ -72,6 +78,8 @@ struct BalanceCheck
     double t = 0.0;
     double imbalance = 1.0;
     double modelImbalance = 1.0; //!< what the cost model predicts for the same partition
+    double workCost = 0.0; //!< the model's second weight at this check (CostFit; 0 if it has none)
+    double speedSpread = 0.0;    //!< max / min of the ranks' busy time per modelled cost (0: no model)
 };
 
 //! A repartition: when, the imbalance of the check that triggered it and of the next one, its cost.
