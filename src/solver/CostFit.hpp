@@ -1,6 +1,6 @@
 /*! \file CostFit.hpp
- *  \brief The load balance's cost model, fitted as the run goes (issue 14, docs/parallel.md 3): each rank's busy
- *  time over a check interval against its cost terms there (cell-steps, plastic-law evaluations, ...),
+ *  \brief The load balance's cost model, fitted as the run goes (issue 14, docs/parallel.md 4): each rank's busy
+ *  time over a check interval against its cost terms there (cell-steps, units of plastic work, ...),
  *
  *      busy_p = sum_k c_k term_{p,k},
  *
