@@ -15,44 +15,6 @@ namespace
 
 const char* const formatTag = "unilag checkpoint 1";
 
-//! Gathers every rank's (gid, values) to rank 0; returns, there, the rows in global-id order.
-std::vector<double> gatherRows(MPI_Comm comm, long long nGlobal, const CheckpointRows& rows, std::string& error)
-{
-    int rank, size;
-    MPI_Comm_rank(comm, &rank);
-    MPI_Comm_size(comm, &size);
-    const int n = int(rows.gid.size());
-    std::vector<int> counts(size), offsets(size, 0);
-    MPI_Gather(&n, 1, MPI_INT, counts.data(), 1, MPI_INT, 0, comm);
-    for (int r = 1; r < size; ++r)
-        offsets[r] = offsets[r - 1] + counts[r - 1];
-    const int total = rank == 0 ? offsets[size - 1] + counts[size - 1] : 0;
-    std::vector<long long> gid(total);
-    MPI_Gatherv(rows.gid.data(), n, MPI_LONG_LONG, gid.data(), counts.data(), offsets.data(), MPI_LONG_LONG, 0, comm);
-    for (int r = 0; r < size; ++r)
-    {
-        counts[r] *= rows.ncomp;
-        offsets[r] *= rows.ncomp;
-    }
-    std::vector<double> values(std::size_t(total) * rows.ncomp), ordered;
-    MPI_Gatherv(rows.values.data(), n * rows.ncomp, MPI_DOUBLE, values.data(), counts.data(), offsets.data(),
-                MPI_DOUBLE, 0, comm);
-    if (rank != 0)
-        return ordered;
-    if (total != nGlobal)
-        error = "the ranks hold " + std::to_string(total) + " rows, not " + std::to_string(nGlobal);
-    ordered.assign(std::size_t(nGlobal) * rows.ncomp, 0.0);
-    for (int i = 0; i < total && error.empty(); ++i)
-    {
-        if (gid[i] < 0 || gid[i] >= nGlobal)
-            error = "global id " + std::to_string(gid[i]) + " out of range";
-        else
-            for (int c = 0; c < rows.ncomp; ++c)
-                ordered[std::size_t(gid[i]) * rows.ncomp + c] = values[std::size_t(i) * rows.ncomp + c];
-    }
-    return ordered;
-}
-
 void bcastString(MPI_Comm comm, std::string& s)
 {
     long long n = (long long)s.size();
@@ -101,14 +63,15 @@ template <class T> void bcastMap(MPI_Comm comm, std::map<std::string, T>& m)
 
 void CheckpointWriter::table(const std::string& name, long long nGlobal, const CheckpointRows& rows)
 {
+    int size;
+    MPI_Comm_size(comm_, &size);
     std::string error;
-    std::vector<double> ordered = gatherRows(comm_, nGlobal, rows, error);
-    int bad = error.empty() ? 0 : 1;
-    MPI_Bcast(&bad, 1, MPI_INT, 0, comm_);
-    if (bad)
+    std::vector<double> block = rowsToBlocks(comm_, RowBlocks{nGlobal, size}, rows, error);
+    error = sharedError(comm_, error);
+    if (!error.empty())
         throw OutputError("checkpoint " + path_ + ": table '" + name + "': " + error);
-    tables_[name] = std::move(ordered);
-    tableColumns_[name] = rows.ncomp;
+    blocks_[name] = std::move(block);
+    shapes_[name] = {nGlobal, rows.ncomp};
 }
 
 namespace
@@ -135,21 +98,35 @@ void writeDataset(hid_t group, const std::string& name, hid_t type, int rank, co
         throw OutputError("cannot write dataset '" + name + "'");
 }
 
-//! Rank 0: the whole file, or the reason it cannot be written.
-std::string writeFile(const std::string& path, const std::map<std::string, std::string>& texts,
-                      const std::map<std::string, std::vector<double>>& vectors,
-                      const std::map<std::string, std::vector<double>>& tables, const std::map<std::string, int>& cols)
+/*! Rows [first, first + n) of a table's dataset, read or written as a hyperslab of its file space. */
+bool rowsIo(hid_t set, hsize_t first, hsize_t n, hsize_t ncomp, double* data, bool write)
 {
+    if (n == 0 || ncomp == 0)
+        return true;
+    H5Id file{H5Dget_space(set), H5Sclose};
+    const hsize_t start[2] = {first, 0}, count[2] = {n, ncomp};
+    H5Id memory{H5Screate_simple(2, count, nullptr), H5Sclose};
+    if (file.id < 0 || memory.id < 0 ||
+        H5Sselect_hyperslab(file.id, H5S_SELECT_SET, start, nullptr, count, nullptr) < 0)
+        return false;
+    return (write ? H5Dwrite(set, H5T_NATIVE_DOUBLE, memory.id, file.id, H5P_DEFAULT, data)
+                  : H5Dread(set, H5T_NATIVE_DOUBLE, memory.id, file.id, H5P_DEFAULT, data)) >= 0;
+}
+
+//! Rank 0: creates the file with its texts and lists, and the (empty) group of the tables; "" or the reason.
+std::string createFile(const std::string& path, const std::map<std::string, std::string>& texts,
+                       const std::map<std::string, std::vector<double>>& vectors, H5Id& file, H5Id& tables)
+{
+    file.id = H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT);
+    if (file.id < 0)
+        return "cannot create " + path;
+    H5Id gt{H5Gcreate2(file.id, "texts", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose};
+    H5Id gv{H5Gcreate2(file.id, "vectors", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose};
+    tables.id = H5Gcreate2(file.id, "tables", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT);
+    if (gt.id < 0 || gv.id < 0 || tables.id < 0)
+        return "cannot create the groups of " + path;
     try
     {
-        H5Id file{H5Fcreate(path.c_str(), H5F_ACC_TRUNC, H5P_DEFAULT, H5P_DEFAULT), H5Fclose};
-        if (file.id < 0)
-            return "cannot create " + path;
-        H5Id gt{H5Gcreate2(file.id, "texts", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose};
-        H5Id gv{H5Gcreate2(file.id, "vectors", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose};
-        H5Id gr{H5Gcreate2(file.id, "tables", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose};
-        if (gt.id < 0 || gv.id < 0 || gr.id < 0)
-            return "cannot create the groups of " + path;
         for (const auto& [name, v] : texts)
         {
             const hsize_t n = v.size();
@@ -160,13 +137,6 @@ std::string writeFile(const std::string& path, const std::map<std::string, std::
             const hsize_t n = v.size();
             writeDataset(gv.id, name, H5T_NATIVE_DOUBLE, 1, &n, v.data());
         }
-        for (const auto& [name, v] : tables)
-        {
-            const hsize_t dims[2] = {v.size() / hsize_t(cols.at(name)), hsize_t(cols.at(name))};
-            writeDataset(gr.id, name, H5T_NATIVE_DOUBLE, 2, dims, v.data());
-        }
-        if (H5Fflush(file.id, H5F_SCOPE_GLOBAL) < 0)
-            return "cannot flush " + path;
     }
     catch (const OutputError& e)
     {
@@ -175,22 +145,47 @@ std::string writeFile(const std::string& path, const std::map<std::string, std::
     return {};
 }
 
+/*! Rank 0: the table `name` (blocks, nc columns) into group, from this rank's block and each other rank's in turn
+ *  (received even after a failure, so that no rank waits forever); "" or the reason. */
+std::string writeTable(MPI_Comm comm, hid_t group, const std::string& name, const RowBlocks& blocks, int nc,
+                       std::vector<double> block, bool ok)
+{
+    const hsize_t dims[2] = {hsize_t(blocks.n), hsize_t(nc)};
+    H5Id space{ok ? H5Screate_simple(2, dims, nullptr) : -1, H5Sclose};
+    H5Id set{ok && space.id >= 0
+                 ? H5Dcreate2(group, name.c_str(), H5T_NATIVE_DOUBLE, space.id, H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT)
+                 : -1,
+             H5Dclose};
+    bool written = set.id >= 0;
+    for (int r = 0; r < blocks.size; ++r)
+    {
+        block.resize(std::size_t(blocks.count(r)) * nc);
+        if (r > 0)
+            recvDoubles(comm, block.data(), block.size(), r);
+        written = written &&
+                  rowsIo(set.id, hsize_t(blocks.first(r)), hsize_t(blocks.count(r)), hsize_t(nc), block.data(), true);
+    }
+    return !ok || written ? std::string() : "cannot write table '" + name + "'";
+}
+
 //! Names of the members of a group.
 std::vector<std::string> members(hid_t group)
 {
     std::vector<std::string> names;
-    H5Literate(group, H5_INDEX_NAME, H5_ITER_INC, nullptr,
-                [](hid_t, const char* name, const H5L_info_t*, void* data) -> herr_t
-                {
-                    static_cast<std::vector<std::string>*>(data)->push_back(name);
-                    return 0;
-                },
-                &names);
+    H5Literate(
+        group, H5_INDEX_NAME, H5_ITER_INC, nullptr,
+        [](hid_t, const char* name, const H5L_info_t*, void* data) -> herr_t
+        {
+            static_cast<std::vector<std::string>*>(data)->push_back(name);
+            return 0;
+        },
+        &names);
     return names;
 }
 
 //! Reads a dataset as doubles (or chars into text); dims gets its shape.
-bool readDataset(hid_t group, const std::string& name, hid_t type, std::vector<hsize_t>& dims, void* (*resize)(void*, std::size_t), void* out)
+bool readDataset(hid_t group, const std::string& name, hid_t type, std::vector<hsize_t>& dims,
+                 void* (*resize)(void*, std::size_t), void* out)
 {
     H5Id set{H5Dopen2(group, name.c_str(), H5P_DEFAULT), H5Dclose};
     if (set.id < 0)
@@ -226,15 +221,36 @@ void* resizeText(void* v, std::size_t n)
 
 void CheckpointWriter::commit()
 {
-    int rank;
+    int rank, size;
     MPI_Comm_rank(comm_, &rank);
+    MPI_Comm_size(comm_, &size);
     std::string error;
     const std::string tmp = path_ + ".tmp";
+    {
+        H5Id file{-1, H5Fclose}, tables{-1, H5Gclose};
+        if (rank == 0)
+        {
+            H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+            texts_["format"] = formatTag;
+            error = createFile(tmp, texts_, vectors_, file, tables);
+        }
+        for (const auto& [name, block] : blocks_)
+        {
+            const RowBlocks blocks{shapes_[name].first, size};
+            if (rank != 0)
+                sendDoubles(comm_, block.data(), block.size(), 0);
+            else
+            {
+                const std::string e =
+                    writeTable(comm_, tables.id, name, blocks, shapes_[name].second, block, error.empty());
+                error = error.empty() ? e : error;
+            }
+        }
+        if (rank == 0 && error.empty() && H5Fflush(file.id, H5F_SCOPE_GLOBAL) < 0)
+            error = "cannot flush " + tmp;
+    }
     if (rank == 0)
     {
-        H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-        texts_["format"] = formatTag;
-        error = writeFile(tmp, texts_, vectors_, tables_, tableColumns_);
         if (error.empty() && std::rename(tmp.c_str(), path_.c_str()) != 0)
             error = "cannot rename " + tmp + " to " + path_;
         if (!error.empty())
@@ -245,42 +261,102 @@ void CheckpointWriter::commit()
         throw OutputError("checkpoint: " + error);
 }
 
-CheckpointReader::CheckpointReader(MPI_Comm comm, const std::string& path) : path_(path)
+namespace
 {
-    int rank;
-    MPI_Comm_rank(comm, &rank);
-    std::string error;
-    if (rank == 0)
+
+const char* const unreadable = "not a readable checkpoint (missing, truncated or corrupt HDF5)";
+
+/*! Rank 0: opens the checkpoint, reads its texts and lists, and the shapes {rows, columns} of its tables; "" or the
+ *  reason. */
+std::string openFile(const std::string& path, H5Id& file, H5Id& tables, std::map<std::string, std::string>& texts,
+                     std::map<std::string, std::vector<double>>& vectors,
+                     std::map<std::string, std::vector<double>>& shapes)
+{
+    H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
+    file.id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
+    H5Id gt{file.id < 0 ? -1 : H5Gopen2(file.id, "texts", H5P_DEFAULT), H5Gclose};
+    H5Id gv{file.id < 0 ? -1 : H5Gopen2(file.id, "vectors", H5P_DEFAULT), H5Gclose};
+    tables.id = file.id < 0 ? -1 : H5Gopen2(file.id, "tables", H5P_DEFAULT);
+    std::vector<hsize_t> dims;
+    bool ok = gt.id >= 0 && gv.id >= 0 && tables.id >= 0;
+    for (const std::string& name : ok ? members(gt.id) : std::vector<std::string>())
+        ok = ok && readDataset(gt.id, name, H5T_NATIVE_CHAR, dims, resizeText, &texts[name]);
+    for (const std::string& name : ok ? members(gv.id) : std::vector<std::string>())
+        ok = ok && readDataset(gv.id, name, H5T_NATIVE_DOUBLE, dims, resizeDoubles, &vectors[name]);
+    for (const std::string& name : ok ? members(tables.id) : std::vector<std::string>())
     {
-        H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
-        H5Id file{H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT), H5Fclose};
-        H5Id gt{file.id < 0 ? -1 : H5Gopen2(file.id, "texts", H5P_DEFAULT), H5Gclose};
-        H5Id gv{file.id < 0 ? -1 : H5Gopen2(file.id, "vectors", H5P_DEFAULT), H5Gclose};
-        H5Id gr{file.id < 0 ? -1 : H5Gopen2(file.id, "tables", H5P_DEFAULT), H5Gclose};
-        std::vector<hsize_t> dims;
-        bool ok = gt.id >= 0 && gv.id >= 0 && gr.id >= 0;
-        for (const std::string& name : ok ? members(gt.id) : std::vector<std::string>())
-            ok = ok && readDataset(gt.id, name, H5T_NATIVE_CHAR, dims, resizeText, &texts_[name]);
-        for (const std::string& name : ok ? members(gv.id) : std::vector<std::string>())
-            ok = ok && readDataset(gv.id, name, H5T_NATIVE_DOUBLE, dims, resizeDoubles, &vectors_[name]);
-        for (const std::string& name : ok ? members(gr.id) : std::vector<std::string>())
-        {
-            ok = ok && readDataset(gr.id, name, H5T_NATIVE_DOUBLE, dims, resizeDoubles, &tables_[name]) &&
-                 dims.size() == 2;
-            tableColumns_[name] = ok ? int(dims[1]) : 0;
-        }
-        if (!ok)
-            error = "not a readable checkpoint (missing, truncated or corrupt HDF5)";
-        else if (texts_["format"] != formatTag)
-            error = "not a unilag checkpoint (format '" + texts_["format"] + "', expected '" + formatTag + "')";
+        H5Id set{H5Dopen2(tables.id, name.c_str(), H5P_DEFAULT), H5Dclose};
+        H5Id space{set.id < 0 ? -1 : H5Dget_space(set.id), H5Sclose};
+        hsize_t shape[2] = {0, 0};
+        ok = ok && space.id >= 0 && H5Sget_simple_extent_ndims(space.id) == 2 &&
+             H5Sget_simple_extent_dims(space.id, shape, nullptr) == 2;
+        shapes[name] = {double(shape[0]), double(shape[1])};
     }
+    if (!ok)
+        return unreadable;
+    if (texts["format"] != formatTag)
+        return "not a unilag checkpoint (format '" + texts["format"] + "', expected '" + formatTag + "')";
+    return {};
+}
+
+/*! Rank 0: reads the table `name` block by block, keeps its own block and sends each other rank its own (zeros
+ *  after a failure, so that no rank waits forever); "" or the reason. */
+std::string readTable(MPI_Comm comm, hid_t group, const std::string& name, const RowBlocks& blocks, int nc,
+                      std::vector<double>& own, bool ok)
+{
+    H5Id set{ok ? H5Dopen2(group, name.c_str(), H5P_DEFAULT) : -1, H5Dclose};
+    bool read = set.id >= 0;
+    std::vector<double> buffer;
+    for (int r = 0; r < blocks.size; ++r)
+    {
+        std::vector<double>& block = r == 0 ? own : buffer;
+        block.assign(std::size_t(blocks.count(r)) * nc, 0.0);
+        read = read &&
+               rowsIo(set.id, hsize_t(blocks.first(r)), hsize_t(blocks.count(r)), hsize_t(nc), block.data(), false);
+        if (!read)
+            std::fill(block.begin(), block.end(), 0.0);
+        if (r > 0)
+            sendDoubles(comm, block.data(), block.size(), r);
+    }
+    return !ok || read ? std::string() : unreadable;
+}
+
+} // namespace
+
+CheckpointReader::CheckpointReader(MPI_Comm comm, const std::string& path) : comm_(comm), path_(path)
+{
+    int rank, size;
+    MPI_Comm_rank(comm, &rank);
+    MPI_Comm_size(comm, &size);
+    std::string error;
+    H5Id file{-1, H5Fclose}, tables{-1, H5Gclose};
+    std::map<std::string, std::vector<double>> shapes;
+    if (rank == 0)
+        error = openFile(path, file, tables, texts_, vectors_, shapes);
     bcastString(comm, error);
     if (!error.empty())
         throw InputError("--restart '" + path + "': " + error);
     bcastMap(comm, texts_);
     bcastMap(comm, vectors_);
-    bcastMap(comm, tables_);
-    bcastMap(comm, tableColumns_);
+    bcastMap(comm, shapes);
+    for (const auto& [name, shape] : shapes)
+    {
+        const RowBlocks blocks{(long long)shape[0], size};
+        const int nc = int(shape[1]);
+        shapes_[name] = {blocks.n, nc};
+        std::vector<double>& block = blocks_[name];
+        block.assign(std::size_t(blocks.count(rank)) * nc, 0.0);
+        if (rank == 0)
+        {
+            const std::string e = readTable(comm, tables.id, name, blocks, nc, block, error.empty());
+            error = error.empty() ? e : error;
+        }
+        else
+            recvDoubles(comm, block.data(), block.size(), 0);
+    }
+    bcastString(comm, error);
+    if (!error.empty())
+        throw InputError("--restart '" + path + "': " + error);
 }
 
 std::string CheckpointReader::text(const std::string& name) const
@@ -301,20 +377,17 @@ const std::vector<double>& CheckpointReader::numbers(const std::string& name) co
 
 std::vector<double> CheckpointReader::rows(const std::string& name, const std::vector<long long>& gid, int ncomp) const
 {
-    auto it = tables_.find(name);
-    if (it == tables_.end() || tableColumns_.at(name) != ncomp)
-        throw InputError("--restart '" + path_ + "': no table '" + name + "' of " + std::to_string(ncomp) +
-                         " columns");
-    const std::vector<double>& t = it->second;
-    const long long n = (long long)(t.size() / std::size_t(ncomp));
-    std::vector<double> out(gid.size() * std::size_t(ncomp));
-    for (std::size_t i = 0; i < gid.size(); ++i)
-    {
-        if (gid[i] < 0 || gid[i] >= n)
-            throw InputError("--restart '" + path_ + "': table '" + name + "' has no row " + std::to_string(gid[i]));
-        for (int c = 0; c < ncomp; ++c)
-            out[i * std::size_t(ncomp) + c] = t[std::size_t(gid[i]) * ncomp + c];
-    }
+    auto it = shapes_.find(name);
+    if (it == shapes_.end() || it->second.second != ncomp)
+        throw InputError("--restart '" + path_ + "': no table '" + name + "' of " + std::to_string(ncomp) + " columns");
+    int size;
+    MPI_Comm_size(comm_, &size);
+    std::string error;
+    std::vector<double> out =
+        rowsFromBlocks(comm_, RowBlocks{it->second.first, size}, blocks_.at(name), ncomp, gid, error);
+    error = sharedError(comm_, error);
+    if (!error.empty())
+        throw InputError("--restart '" + path_ + "': table '" + name + "' has " + error);
     return out;
 }
 

@@ -3,9 +3,12 @@
  *  nodes), so that it reads on any number of ranks, plus named lists of numbers and texts (the time loop's state,
  *  the scene's identity).
  *
- *  Rank 0 writes and reads the file; the rows travel by MPI (gathered by global id, broadcast back). It is written to
- *  "<path>.tmp" and renamed, so a crash mid-write never leaves a half checkpoint under the real name. A file that is
- *  missing, truncated, not a checkpoint, or lacks a table or number is an InputError naming the file.
+ *  Memory: no rank holds a whole table. The rows travel by MPI to a block layout (rank r holds the global ids
+ *  [r N / P, (r + 1) N / P) of a table of N rows); rank 0 streams the blocks to and from the file one rank at a time
+ *  (serial HDF5, hyperslabs), and a reader's rows come from the blocks' owners. The file's layout is that of a
+ *  single-rank write. It is written to "<path>.tmp" and renamed, so a crash mid-write never leaves a half checkpoint
+ *  under the real name. A file that is missing, truncated, not a checkpoint, or lacks a table or number is an
+ *  InputError naming the file, on every rank alike.
  */
 #pragma once
 
@@ -13,18 +16,13 @@
 
 #include <map>
 #include <string>
+#include <utility>
 #include <vector>
+
+#include "io/BlockRows.hpp"
 
 namespace unilag::io
 {
-
-//! Rows of one table on this rank: global ids and their values (ncomp per row, row-major).
-struct CheckpointRows
-{
-    std::vector<long long> gid;
-    std::vector<double> values;
-    int ncomp = 0;
-};
 
 class CheckpointWriter
 {
@@ -42,26 +40,29 @@ class CheckpointWriter
     std::string path_;
     std::map<std::string, std::string> texts_;
     std::map<std::string, std::vector<double>> vectors_;
-    std::map<std::string, std::vector<double>> tables_; //!< rank 0: rows in global-id order
-    std::map<std::string, int> tableColumns_;
+    std::map<std::string, std::vector<double>> blocks_;       //!< this rank's block of each table, in global-id order
+    std::map<std::string, std::pair<long long, int>> shapes_; //!< rows and columns of each table
 };
 
 class CheckpointReader
 {
   public:
-    //! Opens and reads the whole file on rank 0 and broadcasts it. Collective; InputError if unreadable.
+    /*! Opens the file on rank 0, broadcasts its texts and numbers, and hands each rank its block of every table.
+     *  Collective; InputError if unreadable. */
     CheckpointReader(MPI_Comm comm, const std::string& path);
     std::string text(const std::string& name) const;
     const std::vector<double>& numbers(const std::string& name) const;
-    //! The rows of the given global ids (ncomp columns, checked), row-major. InputError if absent.
+    /*! The rows of the given global ids (ncomp columns, checked), row-major, fetched from their blocks' owners.
+     *  Collective (every rank asks for the same tables in the same order); InputError if absent. */
     std::vector<double> rows(const std::string& name, const std::vector<long long>& gid, int ncomp) const;
 
   private:
+    MPI_Comm comm_;
     std::string path_;
     std::map<std::string, std::string> texts_;
     std::map<std::string, std::vector<double>> vectors_;
-    std::map<std::string, std::vector<double>> tables_;
-    std::map<std::string, int> tableColumns_;
+    std::map<std::string, std::vector<double>> blocks_;
+    std::map<std::string, std::pair<long long, int>> shapes_;
 };
 
 } // namespace unilag::io
