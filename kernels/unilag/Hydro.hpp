@@ -184,6 +184,27 @@ void nodalImpedance(const MeshView<D>& mesh, const ConstField& state, const View
     Kokkos::parallel_for("unilag::gpr::nodal_impedance", range(nCells), impedance);
 }
 
+/*! \brief The mean velocity of the cells around each owned node, into vnode: the lagged node velocities of the first
+ *  step's impedance (nodalImpedance), before any nodal solve. With zeros there, a gas in uniform motion got the shock
+ *  term of a compression |v| in its first step, and Noh's cold implosion stopped at t = 0 with ars222 (its final row
+ *  weighs the rates at t^n by beta - 1 < 0, and those carried that impedance, stage 1's did not: docs/ars222.md). */
+template <int D, class P = PhysicsHydro>
+void meanCellVelocityAtNodes(const MeshView<D>& mesh, const ConstField& state, const Field& vnode)
+{
+    using S = StateLayout<D, P>;
+    auto mean = KOKKOS_LAMBDA(const LO r)
+    {
+        Vec<D> v = Vec<D>::zero();
+        const LO first = mesh.nodeCornerOffsets(r), last = mesh.nodeCornerOffsets(r + 1);
+        for (LO q = first; q < last; ++q)
+            for (int d = 0; d < D; ++d)
+                v[d] += state(mesh.nodeCorners(q) / (D + 1), S::vel + d);
+        for (int d = 0; d < D; ++d)
+            vnode(r, d) = last > first ? v[d] / double(last - first) : 0.0;
+    };
+    Kokkos::parallel_for("unilag::gpr::mean_cell_velocity_at_nodes", range(mesh.nOwnedNodes), mean);
+}
+
 //! Subcell matrix M_ik of corner k of a cell (without the impedance factor).
 template <int D>
 KOKKOS_INLINE_FUNCTION Mat<D> subcellMatrix(const Field& corner, LO i, int k)

@@ -50,6 +50,13 @@ template <int D, class P> class GprOperator
                              md_.m.nCells);
     }
 
+    //! Before the first step: the lagged node velocities of the first impedance (meanCellVelocityAtNodes). Collective.
+    void initialNodeVelocities()
+    {
+        meanCellVelocityAtNodes<D, P>(md_.m, md_.read("state"), md_.write("v_node"));
+        halo("v_node");
+    }
+
     //! Geometry of local cells [first, nCells) at the current positions.
     void refreshGeometry(LO first = 0)
     {

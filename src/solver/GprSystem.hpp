@@ -45,6 +45,7 @@ template <int D, class P> class GprSystem : public TimeSystem
     void start()
     {
         op_.refreshGeometry();
+        op_.initialNodeVelocities();
         op_.computeAux();
     }
 
