@@ -344,6 +344,8 @@ void readParallel(ConfigNode& root, Scene& s)
 {
     ConfigNode p = root.sub("parallel");
     s.balanceInterval = p.integer("check_interval", s.balanceInterval, 0, 2000000000L);
+    s.earlyBalanceInterval =
+        p.integer("early_check_interval", std::max(1L, s.balanceInterval / 5), 1, 2000000000L);
     s.imbalanceThreshold = p.nonNegative("imbalance_threshold", s.imbalanceThreshold);
     s.repartition = p.boolean("repartition", s.repartition);
     s.partitioner = p.option<std::string>("partitioner", s.partitioner,

@@ -158,6 +158,7 @@ struct Scene
 
     // parallel: the load balance of a run on several ranks (TimeControl)
     long balanceInterval = 50;       //!< steps between checks of the ranks' busy times (0: none)
+    long earlyBalanceInterval = -1;  //!< steps between checks in the first interval (-1: balanceInterval / 5, >= 1)
     double imbalanceThreshold = 1.1; //!< repartition when max / mean of the busy times exceeds it (< 1: always)
     bool repartition = true;         //!< false: measure and report only
     //! The partitioner of repartitions: Zoltan2's multijagged or rcb, or sfc (ranges of the global ids, which follow

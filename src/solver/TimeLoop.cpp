@@ -60,8 +60,10 @@ class StopOnSignal
 };
 
 /*! The load balance: each rank's busy time in the steps (CPU time less mpi::waitSeconds, the time it waited for
- *  the others), compared over the ranks every balanceInterval steps. Above the threshold the system repartitions,
- *  if its cost model sees an imbalance too (above Zoltan2's tolerance, 1.05): an imbalance the model does not see,
+ *  the others), compared over the ranks every balanceInterval steps, and every earlyBalanceInterval steps through
+ *  the first balanceInterval of a run or restart (the start-up partition balances cells, not their cost, which
+ *  shows as the first steps form a plastic zone, say). Above the threshold the system
+ *  repartitions, if its cost model sees an imbalance too (above Zoltan2's tolerance, 1.05): an imbalance the model does not see,
  *  a new partition by that model cannot remove (a rank slowed by another process on its core, say). A threshold
  *  below 1 repartitions at every check. A few reductions of one number per check. */
 class LoadBalancer
@@ -69,7 +71,7 @@ class LoadBalancer
   public:
     //! fromStep: the step a restarted run continues from (its balance.csv keeps the rows up to there)
     LoadBalancer(const TimeControl& c, MPI_Comm comm, long fromStep)
-        : c_(c), comm_(comm), size_(mpi::size(comm)),
+        : c_(c), comm_(comm), size_(mpi::size(comm)), fromStep_(fromStep),
           on_(c.balanceInterval > 0 && (size_ > 1 || (c.repartition && c.imbalanceThreshold < 1.0)))
     {
         if (!on_ || mpi::rank(comm) != 0 || c_.balanceCsv.empty())
@@ -99,7 +101,10 @@ class LoadBalancer
     //! After accepted step number step (ending at t): the check, and the repartition it calls for. Collective.
     void check(TimeSystem& system, long step, double t, LoopResult& r)
     {
-        if (!on_ || step % c_.balanceInterval != 0)
+        const long since = step - fromStep_; // early checks: the start-up partition's cost (class comment)
+        const bool early =
+            c_.earlyBalanceInterval > 0 && since < c_.balanceInterval && since % c_.earlyBalanceInterval == 0;
+        if (!on_ || (step % c_.balanceInterval != 0 && !early))
             return;
         const std::vector<double> busy = refit(system);
         double sum = 0.0, largest = 0.0;
@@ -183,6 +188,7 @@ class LoadBalancer
     const TimeControl& c_;
     MPI_Comm comm_;
     int size_;
+    long fromStep_; //!< the step the run (or restart) starts from: the first check is counted from there
     bool on_; //!< one rank has no imbalance: checked only when a repartition is forced (threshold < 1)
     bool repartitionable_ = true;
     static constexpr double modelTolerance = 1.05; //!< the partitioner's (Repartition.cpp)

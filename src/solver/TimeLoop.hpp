@@ -65,13 +65,14 @@ struct TimeControl
     double checkpointInterval = 0.0; //!< simulated time between TimeSystem::checkpoint calls (0: none)
     bool checkpointOnSignal = false; //!< SIGTERM / SIGINT: checkpoint at the end of the step and stop
     long balanceInterval = 0;         //!< steps between load-balance checks (0: none)
+    long earlyBalanceInterval = 0;    //!< steps between checks in the first balanceInterval of a run (0: none)
     double imbalanceThreshold = 1.15; //!< repartition when a check's imbalance exceeds it (and the model's too)
     bool repartition = false;         //!< repartition (TimeSystem::repartition) or only measure
     std::string balanceCsv;           //!< per check: step, t, imbalance, repartitioned (rank 0; "" for none)
 };
 
 /*! A load-balance check: the ranks' busy times (CPU time less the time spent waiting in collectives and halo
- *  exchanges, mpi::waitSeconds) over the last balanceInterval steps, as max / mean. */
+ *  exchanges, mpi::waitSeconds) over the steps since the last check, as max / mean. */
 struct BalanceCheck
 {
     long step = 0;

@@ -1,13 +1,15 @@
 # Repartitioning changes no result (issue 14 item 1, docs/parallel.md): runs forced to repartition at every check
-# (parallel.imbalance_threshold 0, every 10 steps) on 1 to 4 ranks end bitwise equal (compare_runs.py at 0: every
-# dataset of the last dump, steps, final time) to the 1-rank run that never does (the agreement matrix's np1 runs,
-# agreement.cmake), and cells did move (repartitioned.py: a repartition every 10 steps, cells moved on 2+ ranks).
+# (parallel.imbalance_threshold 0, every 10 steps and at the early checks of steps 3, 6, 9) on 1 to 4 ranks end
+# bitwise equal (compare_runs.py at 0: every dataset of the last dump, steps, final time) to the 1-rank run that never
+# does (the agreement matrix's np1 runs, agreement.cmake), and cells did move (repartitioned.py: a repartition at
+# every check, cells moved on 2+ ranks).
 # Hydro at order 1 on 1-4 ranks and at order 2; plastic (strain, plastic hints, Picard start history, the cost
 # weights) at order 2 and with ARS(2,2,2) (its lagged stage velocities); the viscous, heat-conducting 3D blast at
 # order 1 and 2; the two-material plastic impact at order 2 on 2 ranks.
 # The space-filling-curve partitioner (ranges of global ids) cuts the mesh other than the start-up multijagged does,
 # so that the first repartition moves a good share of the cells (multijagged or rcb again move 0-22 of 1018 in all).
-set(FORCED --set parallel.check_interval=10 --set parallel.imbalance_threshold=0 --set parallel.partitioner=sfc)
+set(FORCED --set parallel.check_interval=10 --set parallel.early_check_interval=3 --set parallel.imbalance_threshold=0
+    --set parallel.partitioner=sfc)
 function(repartition_run dim variant order np)
   set(name repartition${dim}d_${variant}_o${order}_np${np})
   scheme_args(${order} scheme)
@@ -25,7 +27,7 @@ function(repartition_agree dim variant order)
   set(name repartition${dim}d_${variant}_o${order})
   string(REPLACE ";" " " runs "${runs}")
   add_test(NAME ${name}_agree COMMAND bash -c "${PYTHON} ${SCRIPTS}/compare_runs.py 0 \
-${WORK}/variant${dim}d_${variant}_o${order}_np1 ${runs} && ${PYTHON} ${SCRIPTS}/repartitioned.py 10 ${runs}")
+${WORK}/variant${dim}d_${variant}_o${order}_np1 ${runs} && ${PYTHON} ${SCRIPTS}/repartitioned.py 10 3 ${runs}")
   set_tests_properties(${name}_agree PROPERTIES FIXTURES_REQUIRED "${name};variant${dim}d_${variant}"
                        LABELS "gpr;mpi;regression")
 endfunction()
@@ -41,7 +43,7 @@ add_test(NAME repartition_impact2d_o2_np2 COMMAND ${MPI_RUN} 2 ${UNILAG} run ${I
 set_tests_properties(repartition_impact2d_o2_np2 PROPERTIES PROCESSORS 2 FIXTURES_SETUP repartition_impact2d
                      LABELS "gpr;mpi;regression")
 add_test(NAME repartition_impact2d_agree COMMAND bash -c "${PYTHON} ${SCRIPTS}/compare_runs.py 0 \
-${WORK}/impact2d_o2_np1 ${WORK}/repartition_impact2d_o2_np2 && ${PYTHON} ${SCRIPTS}/repartitioned.py 10 \
+${WORK}/impact2d_o2_np1 ${WORK}/repartition_impact2d_o2_np2 && ${PYTHON} ${SCRIPTS}/repartitioned.py 10 3 \
 ${WORK}/repartition_impact2d_o2_np2")
 set_tests_properties(repartition_impact2d_agree PROPERTIES FIXTURES_REQUIRED "repartition_impact2d;impact2d"
                      LABELS "gpr;mpi;regression")

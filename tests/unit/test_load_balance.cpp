@@ -96,6 +96,23 @@ TEST(LoadBalance, ImbalanceTriggersARepartitionThatRemovesIt)
     EXPECT_LT(r.repartitions[0].after, 1.15);
 }
 
+TEST(LoadBalance, EarlyChecksRepartitionWithinTheFirstInterval)
+{
+    if (ranks() < 2)
+        GTEST_SKIP() << "needs two ranks";
+    Sleeper s(rank() == 0 ? 6.0 : 2.0);
+    unilag::TimeControl c = control(true);
+    c.earlyBalanceInterval = 3; // parallel.early_check_interval: the start-up partition's cost shows early
+    const auto r = unilag::runTimeLoop(s, c, MPI_COMM_WORLD);
+    std::vector<long> steps;
+    for (const auto& check : r.balanceChecks)
+        steps.push_back(check.step);
+    EXPECT_EQ(steps, (std::vector<long>{3, 6, 9, 10, 20, 30})); // early checks through the first interval only
+    ASSERT_EQ(r.repartitions.size(), 1u);
+    EXPECT_EQ(r.repartitions[0].step, 3);
+    EXPECT_LT(r.balanceChecks[1].imbalance, 1.15); // steps 4-6 run balanced
+}
+
 TEST(LoadBalance, MeasureOnlyNeverRepartitions)
 {
     if (ranks() < 2)
