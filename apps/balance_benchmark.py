@@ -17,6 +17,8 @@ import subprocess
 import sys
 import tempfile
 
+import study_plot
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 UNILAG = os.path.join(ROOT, "build", "release", "apps", "unilag")
 
@@ -55,12 +57,7 @@ def plot(png, checks):
             moved = [r for r in rows if r["repartitioned"] == "1"]
             ax.plot([int(r["step"]) for r in moved], [float(r["imbalance"]) for r in moved], "kx",
                     label="repartition" if k == 0 and flag else None)
-    ax.axhline(1.15, color="gray", ls="--", lw=0.8)
-    ax.set_xlabel("step")
-    ax.set_ylabel("imbalance (max / mean busy time)")
-    ax.legend()
-    fig.tight_layout()
-    fig.savefig(png, dpi=120)
+    study_plot.finish(fig, ax, png, "step", "imbalance (max / mean busy time)", 1.15)
 
 
 def main():

@@ -20,6 +20,8 @@ import tempfile
 import time
 from multiprocessing import Process
 
+import study_plot
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 UNILAG = os.path.join(ROOT, "build", "release", "apps", "unilag")
 PROBE_ITERATIONS = 6_000_000
@@ -73,12 +75,7 @@ def plot(png, rows):
     ax.plot(probe_, [r["speedup_2_ranks"] for r in rows], "s", label="2 ranks")
     lo = min(probe_ + [1.5])
     ax.plot([lo, 2.05], [lo, 2.05], "k:", lw=0.8, label="= the machine's")
-    ax.axhline(1.8, color="gray", ls="--", lw=0.8)
-    ax.set_xlabel("machine probe: two-core speed-up in the same round")
-    ax.set_ylabel("speed-up over 1 thread")
-    ax.legend()
-    fig.tight_layout()
-    fig.savefig(png, dpi=120)
+    study_plot.finish(fig, ax, png, "machine probe: two-core speed-up in the same round", "speed-up over 1 thread", 1.8)
 
 
 def main():

@@ -163,11 +163,17 @@ template <int D, class P> class GprSystem : public TimeSystem
         if constexpr (P::plastic)
         {
             const bool interval = intervalSteps_ > 0 && intervalWork_.size() == cost.size();
-            auto work = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), md_.plasticWork());
             const double perStep =
                 plasticWorkCost_ / double(std::max(interval ? intervalSteps_ : stepsSincePartition_, 1L));
-            for (std::size_t i = 0; i < cost.size(); ++i)
-                cost[i] += perStep * (interval ? intervalWork_[i] : work(i));
+            if (interval) // costTerms has copied the work to the host already
+                for (std::size_t i = 0; i < cost.size(); ++i)
+                    cost[i] += perStep * intervalWork_[i];
+            else
+            {
+                auto work = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), md_.plasticWork());
+                for (std::size_t i = 0; i < cost.size(); ++i)
+                    cost[i] += perStep * work(i);
+            }
         }
         return cost;
     }
