@@ -62,10 +62,10 @@ class StopOnSignal
 /*! The load balance: each rank's busy time in the steps (CPU time less mpi::waitSeconds, the time it waited for
  *  the others), compared over the ranks every balanceInterval steps, and every earlyBalanceInterval steps through
  *  the first balanceInterval of a run or restart (the start-up partition balances cells, not their cost, which
- *  shows as the first steps form a plastic zone, say). Above the threshold the system
- *  repartitions, if its cost model sees an imbalance too (above Zoltan2's tolerance, 1.05): an imbalance the model does not see,
- *  a new partition by that model cannot remove (a rank slowed by another process on its core, say). A threshold
- *  below 1 repartitions at every check. A few reductions of one number per check. */
+ *  shows as the first steps form a plastic zone, say). Above the threshold the system repartitions, if its cost
+ *  model sees an imbalance too (above Zoltan2's tolerance, 1.05): an imbalance the model does not see, a new
+ *  partition by that model cannot remove (a rank slowed by another process on its core, say). A threshold below 1
+ *  repartitions at every check. A few reductions of one number per check. */
 class LoadBalancer
 {
   public:
@@ -188,7 +188,7 @@ class LoadBalancer
     const TimeControl& c_;
     MPI_Comm comm_;
     int size_;
-    long fromStep_; //!< the step the run (or restart) starts from: the first check is counted from there
+    long fromStep_; //!< the step the run (or restart) starts from: the early checks count from there
     bool on_; //!< one rank has no imbalance: checked only when a repartition is forced (threshold < 1)
     bool repartitionable_ = true;
     static constexpr double modelTolerance = 1.05; //!< the partitioner's (Repartition.cpp)
