@@ -160,21 +160,38 @@ void depositEnergy(const GprModel<D, P>& md, const SV& sh, const MH& massH)
             sh(i, S::energy) += md.scene.depositEnergy / m[0];
 }
 
-/*! Material::epsRoundoff of every material: 1e-14 times the problem's mean specific total energy (sum m E / sum m
- *  over the owned cells, all ranks). With pressure 0 a cell's internal energy E - v^2/2 is 0 only up to the round-off
- *  (and underflow) of that difference; the update must not reject it as unstable. Collective. */
-template <int D, class P, class StateHost, class MassHost>
-void setRoundoffFloor(GprModel<D, P>& md, const StateHost& sh, const MassHost& massH)
+/*! Material::epsRoundoff of every material: 1e-14 times the problem's specific energy scale, the largest of its mean
+ *  specific total energy (sum m E / sum m over the owned cells, all ranks) and what its boundaries impose: |v|^2 / 2
+ *  of an imposed velocity, |p| / rho_mean of an imposed pressure or traction (a cold gas at rest has no energy until a
+ *  piston drives it: a floor of 0 stopped such a run at ars222's first precursor round-off, eps = -2.5e-71). With
+ *  pressure 0 a cell's internal energy E - v^2/2 is 0 only up to the round-off (and underflow) of that difference;
+ *  the update must not reject it as unstable. Collective. */
+template <int D, class P, class StateHost, class MassHost, class VolumeHost>
+void setRoundoffFloor(GprModel<D, P>& md, const StateHost& sh, const MassHost& massH, const VolumeHost& volume)
 {
     using S = StateLayout<D, P>;
-    double sums[2] = {0.0, 0.0};
+    double sums[3] = {0.0, 0.0, 0.0};
     for (LO i = 0; i < md.mesh->nOwnedCells; ++i)
     {
         sums[0] += massH(i, 0) * sh(i, S::energy);
         sums[1] += massH(i, 0);
+        sums[2] += volume(i);
     }
     mpi::allSum(md.comm, sums);
-    const double floor = sums[1] > 0.0 ? 1e-14 * std::abs(sums[0]) / sums[1] : 0.0;
+    double scale = sums[1] > 0.0 ? std::abs(sums[0]) / sums[1] : 0.0;
+    auto type = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), md.bc.type);
+    for (std::size_t g = 0; g < md.mesh->boundaryNames.size(); ++g)
+    {
+        double v2 = 0.0;
+        for (int d = 0; d < D; ++d)
+            v2 += md.bcValueHost(g, d) * md.bcValueHost(g, d);
+        if (type(g) == BcVelocity)
+            scale = std::max(scale, 0.5 * v2);
+        else if ((type(g) == BcPressure || type(g) == BcTraction) && sums[1] > 0.0)
+            scale = std::max(scale, (type(g) == BcPressure ? std::abs(md.bcValueHost(g, 0)) : std::sqrt(v2)) *
+                                        sums[2] / sums[1]);
+    }
+    const double floor = 1e-14 * scale;
     View<Material*> mats("unilag::materials", md.materials.extent(0));
     auto mh = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), md.materials);
     auto out = Kokkos::create_mirror_view(mats);
@@ -226,7 +243,7 @@ template <int D, class P> std::string initialize(GprModel<D, P>& md)
     for (LO i = 0; i < dm.nCells; ++i)
         cellMaterial(i) = int(matH(i, 0));
     Kokkos::deep_copy(md.cellMaterial, cellMaterial);
-    setRoundoffFloor(md, sh, massH);
+    setRoundoffFloor(md, sh, massH, vol);
     return {};
 }
 
