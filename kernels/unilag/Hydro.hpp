@@ -21,6 +21,7 @@
 
 #include "unilag/Geometry.hpp"
 #include "unilag/Gpr.hpp"
+#include "unilag/NodeMotion.hpp"
 #include "unilag/Physics.hpp"
 #include "unilag/Reconstruction.hpp"
 #include "unilag/Reduce.hpp"
@@ -182,27 +183,6 @@ void nodalImpedance(const MeshView<D>& mesh, const ConstField& state, const View
         aux(i, Aux::impedance) = rho * s;
     };
     Kokkos::parallel_for("unilag::gpr::nodal_impedance", range(nCells), impedance);
-}
-
-/*! \brief The mean velocity of the cells around each owned node, into vnode: the lagged node velocities of the first
- *  step's impedance (nodalImpedance), before any nodal solve. With zeros there, a gas in uniform motion got the shock
- *  term of a compression |v| in its first step, and Noh's cold implosion stopped at t = 0 with ars222 (its final row
- *  weighs the rates at t^n by beta - 1 < 0, and those carried that impedance, stage 1's did not: docs/ars222.md). */
-template <int D, class P = PhysicsHydro>
-void meanCellVelocityAtNodes(const MeshView<D>& mesh, const ConstField& state, const Field& vnode)
-{
-    using S = StateLayout<D, P>;
-    auto mean = KOKKOS_LAMBDA(const LO r)
-    {
-        Vec<D> v = Vec<D>::zero();
-        const LO first = mesh.nodeCornerOffsets(r), last = mesh.nodeCornerOffsets(r + 1);
-        for (LO q = first; q < last; ++q)
-            for (int d = 0; d < D; ++d)
-                v[d] += state(mesh.nodeCorners(q) / (D + 1), S::vel + d);
-        for (int d = 0; d < D; ++d)
-            vnode(r, d) = last > first ? v[d] / double(last - first) : 0.0;
-    };
-    Kokkos::parallel_for("unilag::gpr::mean_cell_velocity_at_nodes", range(mesh.nOwnedNodes), mean);
 }
 
 //! Subcell matrix M_ik of corner k of a cell (without the impedance factor).
@@ -499,17 +479,6 @@ double stableTimeStep(const MeshView<D>& mesh, const ConstField& aux, const Cell
     double dt[1];
     minReduce<1>("unilag::hydro::time_step", mesh.nOwnedCells, dt_cell, dt);
     return dt[0];
-}
-
-//! Moves nodes [0, n): xNew = x + dt v.
-inline void moveNodes(const ConstField& x, const ConstField& vnode, double dt, const Field& xNew, LO n, int dim)
-{
-    auto move = KOKKOS_LAMBDA(const LO r)
-    {
-        for (int d = 0; d < dim; ++d)
-            xNew(r, d) = x(r, d) + dt * vnode(r, d);
-    };
-    Kokkos::parallel_for("unilag::hydro::move_nodes", range(n), move);
 }
 
 //! Extrema of one Picard iteration of the G_e update.
