@@ -135,23 +135,6 @@ std::vector<double> rowsFromBlocks(MPI_Comm comm, const RowBlocks& blocks, const
     return out;
 }
 
-std::string sharedError(MPI_Comm comm, const std::string& error)
-{
-    int rank, size;
-    MPI_Comm_rank(comm, &rank);
-    MPI_Comm_size(comm, &size);
-    int source = error.empty() ? size : rank;
-    MPI_Allreduce(MPI_IN_PLACE, &source, 1, MPI_INT, MPI_MIN, comm);
-    if (source == size)
-        return {};
-    std::string shared = error;
-    long long n = (long long)shared.size();
-    MPI_Bcast(&n, 1, MPI_LONG_LONG, source, comm);
-    shared.resize(std::size_t(n));
-    MPI_Bcast(shared.data(), int(n), MPI_CHAR, source, comm);
-    return shared;
-}
-
 void sendDoubles(MPI_Comm comm, const double* data, std::size_t n, int dest)
 {
     for (std::size_t first = 0; first < n; first += maxCount)

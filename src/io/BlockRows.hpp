@@ -41,9 +41,6 @@ std::vector<double> rowsToBlocks(MPI_Comm comm, const RowBlocks& blocks, const C
 std::vector<double> rowsFromBlocks(MPI_Comm comm, const RowBlocks& blocks, const std::vector<double>& block, int ncomp,
                                    const std::vector<long long>& gid, std::string& error);
 
-//! The error of the lowest rank that has one ("" if none), on every rank. Collective.
-std::string sharedError(MPI_Comm comm, const std::string& error);
-
 //! Point-to-point transfer of n doubles, in pieces that fit an MPI count.
 void sendDoubles(MPI_Comm comm, const double* data, std::size_t n, int dest);
 void recvDoubles(MPI_Comm comm, double* data, std::size_t n, int source);

@@ -7,6 +7,7 @@
 #include <type_traits>
 
 #include "core/Errors.hpp"
+#include "core/Mpi.hpp"
 
 namespace unilag::io
 {
@@ -67,7 +68,7 @@ void CheckpointWriter::table(const std::string& name, long long nGlobal, const C
     MPI_Comm_size(comm_, &size);
     std::string error;
     std::vector<double> block = rowsToBlocks(comm_, RowBlocks{nGlobal, size}, rows, error);
-    error = sharedError(comm_, error);
+    error = mpi::firstMessage(comm_, error);
     if (!error.empty())
         throw OutputError("checkpoint " + path_ + ": table '" + name + "': " + error);
     blocks_[name] = std::move(block);
@@ -385,7 +386,7 @@ std::vector<double> CheckpointReader::rows(const std::string& name, const std::v
     std::string error;
     std::vector<double> out =
         rowsFromBlocks(comm_, RowBlocks{it->second.first, size}, blocks_.at(name), ncomp, gid, error);
-    error = sharedError(comm_, error);
+    error = mpi::firstMessage(comm_, error);
     if (!error.empty())
         throw InputError("--restart '" + path_ + "': table '" + name + "' has " + error);
     return out;
