@@ -17,6 +17,10 @@
  *         at many vertices (most of them in 3D), so smooth regions get less than full second order.
  *       - VertexBased: the extrema over every cell around the vertex bound it as well (after Kuzmin), which keeps
  *         linear fields whole in cells without a boundary vertex: the choice for smooth and elastic flows (the plate).
+ *       - VelocityVertexBased: the velocity alone, bounded as VertexBased; pressure and shear stress keep their cell
+ *         values. On 2D Sedov, order 2 with BarthJespersen left twice order 1's density scatter behind the shock and
+ *         was above order 1 on 64k triangles; the reconstructed pressure made most of it (docs/sedov.md, session 11),
+ *         even where the post-shock flow is smooth. Worse on Noh and 3D Sedov, first order in p on smooth flows.
  *     Limiter::None skips the limiter (shock-free flows only). Bounds over the whole node-neighbour stencil were
  *     measured and not kept: too weak at the 2D Sedov shock, and the viscous 3D Sedov tangles.
  *  Sums run over the node -> corner CSR, sorted by global cell id: results are independent of the partition and the
@@ -155,19 +159,40 @@ KOKKOS_INLINE_FUNCTION Vec<D> faceUnitNormal(const MeshView<D>& mesh, const Cons
 
 /*! Limiter of the second-order reconstruction (scene key scheme.limiter). Barth-Jespersen in both bounded forms:
  *  each vertex value stays within the extrema of the cell and its face neighbours (BarthJespersen), and for
- *  VertexBased also of every cell around that vertex (linearity-preserving in the interior, after Kuzmin). */
+ *  VertexBased also of every cell around that vertex (linearity-preserving in the interior, after Kuzmin).
+ *  VelocityVertexBased reconstructs the velocity only, bounded as VertexBased: pressure and shear stress keep their
+ *  cell values (the file comment says why; quantities other than the mechanical ones are bounded as BarthJespersen). */
 enum class Limiter
 {
     None,
     BarthJespersen,
-    VertexBased
+    VertexBased,
+    VelocityVertexBased
 };
+
+//! How limitedGradientsOf bounds one quantity: what a Limiter means for it (the Q's bounds()).
+enum class Bounds
+{
+    Unlimited,      //!< the least-squares gradient
+    FaceNeighbours, //!< vertex values within the extrema of the cell and its face neighbours
+    Vertex,         //!< ... or of every cell around the vertex
+    CellValue       //!< not reconstructed: gradient 0
+};
+
+//! The bounds of Limiter's three uniform forms (VelocityVertexBased: FaceNeighbours, for quantities it does not name).
+KOKKOS_INLINE_FUNCTION constexpr Bounds uniformBounds(Limiter limiter)
+{
+    return limiter == Limiter::None          ? Bounds::Unlimited
+           : limiter == Limiter::VertexBased ? Bounds::Vertex
+                                             : Bounds::FaceNeighbours;
+}
 
 /*! The quantities a reconstruction fits (the Q of limitedGradientsOf): here velocity, pressure and shear stress
  *  (ReconLayout). Q gives nq, the index bdata of the quantity that boundary faces may impose (here the pressure),
- *  atFaces (the limiter bounds the face-centre values, not the vertex values: where Q's users evaluate it), the
- *  values of a cell, the groups across which the cell's mirror image joins the stencil and its mirrored values, and
- *  the imposed boundary value of quantity bdata at a group (false if none). The other Q: heat::Quantities. */
+ *  the Bounds each Limiter gives each quantity, atFaces (the limiter bounds the face-centre values, not the vertex
+ *  values: where Q's users evaluate it), the values of a cell, the groups across which the cell's mirror image joins
+ *  the stencil and its mirrored values, and the imposed boundary value of quantity bdata at a group (false if none).
+ *  The other Q: heat::Quantities. */
 template <int D, class P>
 struct MechanicalQuantities
 {
@@ -178,6 +203,13 @@ struct MechanicalQuantities
     BoundaryView bc;
 
     KOKKOS_INLINE_FUNCTION void values(LO j, double (&w)[nq]) const { reconValues<D, P>(state, aux, stress, j, w); }
+    //! VelocityVertexBased: the velocity (the first D quantities) bounded per vertex, the traction not reconstructed.
+    KOKKOS_INLINE_FUNCTION static constexpr Bounds bounds(Limiter limiter, int q)
+    {
+        if (limiter == Limiter::VelocityVertexBased)
+            return q < ReconLayout<D, P>::pressure ? Bounds::Vertex : Bounds::CellValue;
+        return uniformBounds(limiter);
+    }
     KOKKOS_INLINE_FUNCTION bool mirrors(int g) const { return bc.type(g) == BcSlipWall; }
     KOKKOS_INLINE_FUNCTION void mirror(const Vec<D>& n, double (&w)[nq]) const { mirrorValues<D, P>(n, w); }
     KOKKOS_INLINE_FUNCTION bool boundaryValue(int g, double& value) const
@@ -207,8 +239,9 @@ void limitedGradientsOf(const MeshView<D>& mesh, const Q& quantities, const Cell
     constexpr int BQ = Q::bdata;
     auto centroid = geom.centroid;
     const bool hasBc = bc.type.extent(0) > 0;
-    const bool limit = limiter != Limiter::None;
-    const bool perVertex = limiter == Limiter::VertexBased;
+    bool perVertex = false; // some quantity needs the extrema around each vertex
+    for (int q = 0; q < NQ; ++q)
+        perVertex = perVertex || Q::bounds(limiter, q) == Bounds::Vertex;
     auto gradient = KOKKOS_LAMBDA(const LO i)
     {
         double wi[NQ], wj[NQ], wmin[NQ], wmax[NQ]; // wmin, wmax: over the cell and its face neighbours
@@ -333,6 +366,13 @@ void limitedGradientsOf(const MeshView<D>& mesh, const Q& quantities, const Cell
         const bool spans = det > 1e-10 * (D == 2 ? scale * scale : scale * scale * scale);
         for (int q = 0; q < NQ; ++q)
         {
+            const Bounds bounds = Q::bounds(limiter, q);
+            if (bounds == Bounds::CellValue)
+            {
+                for (int a = 0; a < D; ++a)
+                    grad(i, q * D + a) = 0.0;
+                continue;
+            }
             const Vec<D> g = !spans ? Vec<D>::zero() : q == BQ ? solve(Ap, rhsp) : solve(A, rhs[q]);
             // Barth-Jespersen: the largest phi in [0, 1] that keeps every vertex value within its bounds, or
             // (Q::atFaces) every face-centre value within the widest bounds of the face's vertices.
@@ -341,14 +381,14 @@ void limitedGradientsOf(const MeshView<D>& mesh, const Q& quantities, const Cell
             {
                 vhi[k] = q == BQ ? pmax[k] : wmax[q];
                 vlo[k] = q == BQ ? pmin[k] : wmin[q];
-                if (perVertex)
+                if (bounds == Bounds::Vertex)
                 {
                     vhi[k] = Kokkos::Experimental::fmax(vhi[k], vmax[k][q]);
                     vlo[k] = Kokkos::Experimental::fmin(vlo[k], vmin[k][q]);
                 }
             }
             double phi = 1.0;
-            for (int k = 0; k < NV && limit; ++k)
+            for (int k = 0; k < NV && bounds != Bounds::Unlimited; ++k)
             {
                 double dw = dot(g, dx[k]), hi = vhi[k], lo = vlo[k];
                 if constexpr (Q::atFaces)

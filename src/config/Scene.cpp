@@ -317,6 +317,7 @@ void readScheme(ConfigNode& root, Scene& s)
     s.limiter = sch.option<Limiter>("limiter", "barth_jespersen",
                                     {{"barth_jespersen", Limiter::BarthJespersen},
                                      {"vertex_based", Limiter::VertexBased},
+                                     {"velocity_vertex_based", Limiter::VelocityVertexBased},
                                      {"none", Limiter::None}});
     s.integrator = sch.option<Integrator>("integrator", "midpoint",
                                           {{"midpoint", Integrator::Midpoint}, {"ars222", Integrator::Ars222}});
