@@ -112,7 +112,7 @@ struct Quantities
         for (int d = 0; d < D; ++d)
             w[J + d] = state(j, StateLayout<D, P>::J + d);
     }
-    KOKKOS_INLINE_FUNCTION static constexpr Bounds bounds(Limiter limiter, int) { return uniformBounds(limiter); }
+    KOKKOS_INLINE_FUNCTION Bounds bounds(Limiter limiter, int) const { return uniformBounds(limiter); }
     KOKKOS_INLINE_FUNCTION bool mirrors(int g) const { return bc.thermal(g) != ThermalIsothermal; }
     KOKKOS_INLINE_FUNCTION void mirror(const Vec<D>& n, double (&w)[nq]) const
     {

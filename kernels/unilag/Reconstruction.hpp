@@ -17,12 +17,13 @@
  *         at many vertices (most of them in 3D), so smooth regions get less than full second order.
  *       - VertexBased: the extrema over every cell around the vertex bound it as well (after Kuzmin), which keeps
  *         linear fields whole in cells without a boundary vertex: the choice for smooth and elastic flows (the plate).
- *       - VelocityVertexBased: the velocity alone, bounded as VertexBased; pressure and shear stress keep their cell
- *         values. On 2D Sedov, order 2 with BarthJespersen left twice order 1's density scatter behind the shock and
- *         was above order 1 on 64k triangles; the reconstructed pressure made most of it (docs/sedov.md, session 11),
- *         even where the post-shock flow is smooth. Worse on Noh and 3D Sedov, first order in p on smooth flows.
  *     Limiter::None skips the limiter (shock-free flows only). Bounds over the whole node-neighbour stencil were
  *     measured and not kept: too weak at the 2D Sedov shock, and the viscous 3D Sedov tangles.
+ *   - What is reconstructed (scene key scheme.reconstruct): all of it, or the velocity alone (Reconstructed), the
+ *     pressure and shear stress keeping their cell values. On Sedov's blast, order 2 left twice order 1's density
+ *     scatter behind the shock (an entropy error) and was above order 1 on 64k triangles; the reconstructed
+ *     pressure made most of it, even behind the shock where the flow is smooth (docs/sedov.md, session 11). The
+ *     velocity alone is first order in the pressure on smooth flows (the vortex), and worse on Noh's implosion.
  *  Sums run over the node -> corner CSR, sorted by global cell id: results are independent of the partition and the
  *  thread count, bit for bit.
  */
@@ -159,15 +160,20 @@ KOKKOS_INLINE_FUNCTION Vec<D> faceUnitNormal(const MeshView<D>& mesh, const Cons
 
 /*! Limiter of the second-order reconstruction (scene key scheme.limiter). Barth-Jespersen in both bounded forms:
  *  each vertex value stays within the extrema of the cell and its face neighbours (BarthJespersen), and for
- *  VertexBased also of every cell around that vertex (linearity-preserving in the interior, after Kuzmin).
- *  VelocityVertexBased reconstructs the velocity only, bounded as VertexBased: pressure and shear stress keep their
- *  cell values (the file comment says why; quantities other than the mechanical ones are bounded as BarthJespersen). */
+ *  VertexBased also of every cell around that vertex (linearity-preserving in the interior, after Kuzmin). */
 enum class Limiter
 {
     None,
     BarthJespersen,
-    VertexBased,
-    VelocityVertexBased
+    VertexBased
+};
+
+/*! What the mechanical reconstruction reconstructs (scene key scheme.reconstruct): every quantity, or the velocity
+ *  alone, the pressure and shear stress keeping their cell values (the file comment says when and why). */
+enum class Reconstructed
+{
+    All,
+    Velocity
 };
 
 //! How limitedGradientsOf bounds one quantity: what a Limiter means for it (the Q's bounds()).
@@ -179,7 +185,7 @@ enum class Bounds
     CellValue       //!< not reconstructed: gradient 0
 };
 
-//! The bounds of Limiter's three uniform forms (VelocityVertexBased: FaceNeighbours, for quantities it does not name).
+//! The bounds a Limiter gives every quantity it limits.
 KOKKOS_INLINE_FUNCTION constexpr Bounds uniformBounds(Limiter limiter)
 {
     return limiter == Limiter::None          ? Bounds::Unlimited
@@ -201,13 +207,14 @@ struct MechanicalQuantities
     static constexpr bool atFaces = false; //!< limited at the vertices (the nodal solver evaluates it there)
     ConstField state, aux, stress;
     BoundaryView bc;
+    Reconstructed what = Reconstructed::All;
 
     KOKKOS_INLINE_FUNCTION void values(LO j, double (&w)[nq]) const { reconValues<D, P>(state, aux, stress, j, w); }
-    //! VelocityVertexBased: the velocity (the first D quantities) bounded per vertex, the traction not reconstructed.
-    KOKKOS_INLINE_FUNCTION static constexpr Bounds bounds(Limiter limiter, int q)
+    //! Reconstructed::Velocity: the traction (pressure, shear stress: after the velocity) at cell values.
+    KOKKOS_INLINE_FUNCTION Bounds bounds(Limiter limiter, int q) const
     {
-        if (limiter == Limiter::VelocityVertexBased)
-            return q < ReconLayout<D, P>::pressure ? Bounds::Vertex : Bounds::CellValue;
+        if (what == Reconstructed::Velocity && q >= ReconLayout<D, P>::pressure)
+            return Bounds::CellValue;
         return uniformBounds(limiter);
     }
     KOKKOS_INLINE_FUNCTION bool mirrors(int g) const { return bc.type(g) == BcSlipWall; }
@@ -241,7 +248,7 @@ void limitedGradientsOf(const MeshView<D>& mesh, const Q& quantities, const Cell
     const bool hasBc = bc.type.extent(0) > 0;
     bool perVertex = false; // some quantity needs the extrema around each vertex
     for (int q = 0; q < NQ; ++q)
-        perVertex = perVertex || Q::bounds(limiter, q) == Bounds::Vertex;
+        perVertex = perVertex || quantities.bounds(limiter, q) == Bounds::Vertex;
     auto gradient = KOKKOS_LAMBDA(const LO i)
     {
         double wi[NQ], wj[NQ], wmin[NQ], wmax[NQ]; // wmin, wmax: over the cell and its face neighbours
@@ -366,7 +373,7 @@ void limitedGradientsOf(const MeshView<D>& mesh, const Q& quantities, const Cell
         const bool spans = det > 1e-10 * (D == 2 ? scale * scale : scale * scale * scale);
         for (int q = 0; q < NQ; ++q)
         {
-            const Bounds bounds = Q::bounds(limiter, q);
+            const Bounds bounds = quantities.bounds(limiter, q);
             if (bounds == Bounds::CellValue)
             {
                 for (int a = 0; a < D; ++a)
@@ -436,9 +443,10 @@ inline void dropFlaggedGradients(const Field& grad, const ConstField& flags, LO 
 template <int D, class P>
 void limitedGradients(const MeshView<D>& mesh, const ConstField& state, const ConstField& aux,
                       const ConstField& stress, const CellGeometry& geom, const ConstField& x, const Field& grad,
-                      const BoundaryView& bc = BoundaryView(), Limiter limiter = Limiter::BarthJespersen)
+                      const BoundaryView& bc = BoundaryView(), Limiter limiter = Limiter::BarthJespersen,
+                      Reconstructed what = Reconstructed::All)
 {
-    limitedGradientsOf<D>(mesh, MechanicalQuantities<D, P>{state, aux, stress, bc}, geom, x, grad, bc, limiter);
+    limitedGradientsOf<D>(mesh, MechanicalQuantities<D, P>{state, aux, stress, bc, what}, geom, x, grad, bc, limiter);
 }
 
 } // namespace unilag

@@ -307,7 +307,7 @@ void readTime(ConfigNode& root, Scene& s)
     t.rejectUnknown();
 }
 
-//! scheme: order, limiter, Picard loop.
+//! scheme: order, limiter, what is reconstructed, Picard loop.
 void readScheme(ConfigNode& root, Scene& s)
 {
     ConfigNode sch = root.sub("scheme");
@@ -317,8 +317,9 @@ void readScheme(ConfigNode& root, Scene& s)
     s.limiter = sch.option<Limiter>("limiter", "barth_jespersen",
                                     {{"barth_jespersen", Limiter::BarthJespersen},
                                      {"vertex_based", Limiter::VertexBased},
-                                     {"velocity_vertex_based", Limiter::VelocityVertexBased},
                                      {"none", Limiter::None}});
+    s.reconstruct = sch.option<Reconstructed>("reconstruct", "all",
+                                              {{"all", Reconstructed::All}, {"velocity", Reconstructed::Velocity}});
     s.integrator = sch.option<Integrator>("integrator", "midpoint",
                                           {{"midpoint", Integrator::Midpoint}, {"ars222", Integrator::Ars222}});
     if (s.integrator == Integrator::Ars222 && s.order != 2)
@@ -345,8 +346,7 @@ void readParallel(ConfigNode& root, Scene& s)
 {
     ConfigNode p = root.sub("parallel");
     s.balanceInterval = p.integer("check_interval", s.balanceInterval, 0, 2000000000L);
-    s.earlyBalanceInterval =
-        p.integer("early_check_interval", std::max(1L, s.balanceInterval / 5), 1, 2000000000L);
+    s.earlyBalanceInterval = p.integer("early_check_interval", s.earlyChecks(), 1, 2000000000L);
     s.imbalanceThreshold = p.nonNegative("imbalance_threshold", s.imbalanceThreshold);
     s.repartition = p.boolean("repartition", s.repartition);
     s.partitioner = p.option<std::string>("partitioner", s.partitioner,

@@ -7,6 +7,7 @@
  */
 #pragma once
 
+#include <algorithm>
 #include <array>
 #include <map>
 #include <stdexcept>
@@ -148,6 +149,7 @@ struct Scene
     int picardMaxIterations = 50;   //!< cap: the step is cut and retried when it is reached
     int order = 1;                  //!< 1: first order; 2: limited linear reconstruction + midpoint predictor-corrector
     Limiter limiter = Limiter::BarthJespersen; //!< order 2 only
+    Reconstructed reconstruct = Reconstructed::All; //!< order 2 only: every quantity, or the velocity alone
     Integrator integrator = Integrator::Midpoint; //!< order 2 only (ars222 is rejected at order 1)
 
     std::string outputDirectory = "output";
@@ -158,9 +160,14 @@ struct Scene
 
     // parallel: the load balance of a run on several ranks (TimeControl)
     long balanceInterval = 50;       //!< steps between checks of the ranks' busy times (0: none)
-    long earlyBalanceInterval = -1;  //!< steps between checks in the first interval (-1: balanceInterval / 5, >= 1)
+    long earlyBalanceInterval = -1;  //!< steps between checks in the first interval (-1: earlyChecks())
     double imbalanceThreshold = 1.1; //!< repartition when max / mean of the busy times exceeds it (< 1: always)
     bool repartition = true;         //!< false: measure and report only
+    //! The early checks' interval: the scene's, or by default a fifth of the check interval (at least 1).
+    long earlyChecks() const
+    {
+        return earlyBalanceInterval >= 0 ? earlyBalanceInterval : std::max(1L, balanceInterval / 5);
+    }
     //! The partitioner of repartitions: Zoltan2's multijagged or rcb, or sfc (ranges of the global ids, which follow
     //! a Morton curve of the cells, GlobalMesh.cpp)
     std::string partitioner = "multijagged";

@@ -35,8 +35,7 @@ inline TimeControl timeControl(const Scene& scene, const RunOptions& options)
     c.checkpointInterval = scene.checkpointInterval;
     c.checkpointOnSignal = true;
     c.balanceInterval = scene.balanceInterval;
-    c.earlyBalanceInterval =
-        scene.earlyBalanceInterval >= 0 ? scene.earlyBalanceInterval : std::max(1L, scene.balanceInterval / 5);
+    c.earlyBalanceInterval = scene.earlyChecks();
     c.imbalanceThreshold = scene.imbalanceThreshold;
     c.repartition = scene.repartition;
     c.balanceCsv = (std::filesystem::path(scene.outputDirectory) / "balance.csv").string();

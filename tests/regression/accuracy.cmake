@@ -172,9 +172,9 @@ set_tests_properties(ars222_time_order tau1_sweep_ars222 PROPERTIES LABELS "regr
 
 # Second order (scheme.order: 2: limited reconstruction, midpoint predictor-corrector). The kernels' exactness for
 # linear fields, bounds and conservation are unit tests (test_hydro_kernels.cpp); here the solver:
-#  - 2D Sedov (4k, the scene's velocity_vertex_based limiter): conservation to round-off; shock radius within 2%
-#    (measured 1.0001, +0.13%); L1(density) <= 0.041 (measured 0.0370; first order 0.0544). The scene's limiter before,
-#    barth_jespersen (0.0440), fails it: the bound was 0.046 then (docs/sedov.md);
+#  - 2D Sedov (4k, the scene's velocity alone reconstructed, vertex-based bounds): conservation to round-off; shock
+#    radius within 2% (measured 1.0001, +0.13%); L1(density) <= 0.041 (measured 0.0370; first order 0.0544). All
+#    reconstructed with barth_jespersen, the scene's scheme before (0.0440), fails it: the bound was 0.046 then;
 #  - every GPR equation (3D viscous, heat-conducting Sedov) and the plastic impact: 1 and 2 ranks, 1 and 2 threads
 #    give the same fields (the gradients' halo exchange included).
 add_test(NAME sedov2d_order2 COMMAND ${UNILAG} run ${INPUTS}/sedov2d.yaml --quiet --check --set mesh.size=0.0288

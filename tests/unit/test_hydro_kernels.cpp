@@ -237,10 +237,10 @@ template <int D> void checkReconstruction(HostMesh<D> h)
     std::printf("vertex-based: mean limiter factor %.3f, %d of %d cells (no boundary vertex) keep the whole slope\n",
                 keptVertex, interiorCells, int(hydro.nCells));
 
-    // Velocity only: the velocity's gradients bitwise those of VertexBased, the pressure's zero (cell values).
+    // The velocity alone: its gradients bitwise those of VertexBased, the pressure's zero (cell values).
     unilag::limitedGradients<D, unilag::PhysicsHydro>(hydro.mesh, hydro.state, hydro.aux, unilag::ConstField(),
                                                       hydro.geom, hydro.x, hydro.grad, unilag::BoundaryView(),
-                                                      unilag::Limiter::VelocityVertexBased);
+                                                      unilag::Limiter::VertexBased, unilag::Reconstructed::Velocity);
     auto velocityOnly = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), hydro.grad);
     for (LO i = 0; i < hydro.nCells; ++i)
         for (int a = 0; a < D; ++a)
