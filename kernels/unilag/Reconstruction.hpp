@@ -209,7 +209,13 @@ struct MechanicalQuantities
     BoundaryView bc;
     Reconstructed what = Reconstructed::All;
 
-    KOKKOS_INLINE_FUNCTION void values(LO j, double (&w)[nq]) const { reconValues<D, P>(state, aux, stress, j, w); }
+    KOKKOS_INLINE_FUNCTION void values(LO j, double (&w)[nq]) const
+    {
+        if (what == Reconstructed::All)
+            return reconValues<D, P>(state, aux, stress, j, w);
+        for (int q = 0; q < nq; ++q) // the traction is not fitted: not loaded either
+            w[q] = q < D ? state(j, StateLayout<D, P>::vel + q) : 0.0;
+    }
     //! Reconstructed::Velocity: the traction (pressure, shear stress: after the velocity) at cell values.
     KOKKOS_INLINE_FUNCTION Bounds bounds(Limiter limiter, int q) const
     {
@@ -247,8 +253,14 @@ void limitedGradientsOf(const MeshView<D>& mesh, const Q& quantities, const Cell
     auto centroid = geom.centroid;
     const bool hasBc = bc.type.extent(0) > 0;
     bool perVertex = false; // some quantity needs the extrema around each vertex
+    int nFit = 0;           // quantities 0 .. nFit-1 are fitted; those after keep their cell values (Q's bounds)
     for (int q = 0; q < NQ; ++q)
+    {
         perVertex = perVertex || quantities.bounds(limiter, q) == Bounds::Vertex;
+        if (quantities.bounds(limiter, q) != Bounds::CellValue)
+            nFit = q + 1;
+    }
+    const bool fitBQ = BQ < nFit;
     auto gradient = KOKKOS_LAMBDA(const LO i)
     {
         double wi[NQ], wj[NQ], wmin[NQ], wmax[NQ]; // wmin, wmax: over the cell and its face neighbours
@@ -274,7 +286,7 @@ void limitedGradientsOf(const MeshView<D>& mesh, const Q& quantities, const Cell
         for (int k = 0; k < NV; ++k)
         {
             if (perVertex)
-                for (int q = 0; q < NQ; ++q)
+                for (int q = 0; q < nFit; ++q)
                     vmin[k][q] = vmax[k][q] = wi[q];
             const LO r = mesh.cellNodes(i, k);
             for (LO c = mesh.nodeCornerOffsets(r); c < mesh.nodeCornerOffsets(r + 1); ++c)
@@ -288,10 +300,10 @@ void limitedGradientsOf(const MeshView<D>& mesh, const Q& quantities, const Cell
                 const double w = 1.0 / dot(d, d);
                 A.addOuter(w, d);
                 quantities.values(j, wj);
-                for (int q = 0; q < NQ; ++q)
+                for (int q = 0; q < nFit; ++q)
                     rhs[q] = rhs[q] + (w * (wj[q] - wi[q])) * d;
                 if (perVertex)
-                    for (int q = 0; q < NQ; ++q)
+                    for (int q = 0; q < nFit; ++q)
                     {
                         vmin[k][q] = Kokkos::Experimental::fmin(vmin[k][q], wj[q]);
                         vmax[k][q] = Kokkos::Experimental::fmax(vmax[k][q], wj[q]);
@@ -322,10 +334,10 @@ void limitedGradientsOf(const MeshView<D>& mesh, const Q& quantities, const Cell
                 for (int q = 0; q < NQ; ++q)
                     wj[q] = wi[q];
                 quantities.mirror(n, wj);
-                for (int q = 0; q < NQ; ++q)
+                for (int q = 0; q < nFit; ++q)
                     rhs[q] = rhs[q] + (w * (wj[q] - wi[q])) * d;
             }
-            for (int q = 0; q < NQ; ++q)
+            for (int q = 0; q < nFit; ++q)
             {
                 wmin[q] = Kokkos::Experimental::fmin(wmin[q], wj[q]);
                 wmax[q] = Kokkos::Experimental::fmax(wmax[q], wj[q]);
@@ -338,7 +350,7 @@ void limitedGradientsOf(const MeshView<D>& mesh, const Q& quantities, const Cell
         }
         Mat<D> Ap = A;                   // quantity BQ's own fit: imposed boundary values are data at their faces
         Vec<D> rhsp = rhs[BQ];
-        if (hasBc)
+        if (hasBc && fitBQ)
             for (int f = 0; f < NV; ++f)
             {
                 const int g = mesh.cellFaceGroup(i, f);
@@ -374,7 +386,7 @@ void limitedGradientsOf(const MeshView<D>& mesh, const Q& quantities, const Cell
         for (int q = 0; q < NQ; ++q)
         {
             const Bounds bounds = quantities.bounds(limiter, q);
-            if (bounds == Bounds::CellValue)
+            if (q >= nFit || bounds == Bounds::CellValue)
             {
                 for (int a = 0; a < D; ++a)
                     grad(i, q * D + a) = 0.0;
