@@ -25,7 +25,7 @@ inline TimeControl timeControl(const Scene& scene, const RunOptions& options)
 {
     TimeControl c;
     c.endTime = scene.endTime;
-    c.outputInterval = scene.outputInterval;
+    c.outputInterval = scene.writeOutput ? scene.outputInterval : 0.0; // no output: no step cut to its times
     c.initialTimeStep = scene.initialTimeStep;
     c.maxGrowth = scene.maxGrowth;
     c.maxSteps = scene.maxSteps;

@@ -233,9 +233,10 @@ class Progress
 };
 
 /*! The step size before any halving: the stable step, a tenth of it first, at most maxGrowth times the last one,
- *  and clipped to the next output time. Sets failure if it is not positive or has collapsed. */
+ *  and clipped to the next output time; unclipped is the step before that clip. Sets failure if it is not positive
+ *  or has collapsed. */
 double chooseStep(TimeSystem& system, const TimeControl& c, double t, double dtPrev, long step, double nextOutput,
-                  std::string& failure)
+                  double& unclipped, std::string& failure)
 {
     double dt = system.prepareStep(t, step);
     if (!(dt > 0.0) || !std::isfinite(dt))
@@ -249,6 +250,7 @@ double chooseStep(TimeSystem& system, const TimeControl& c, double t, double dtP
         failure = system.collapse(t, dt, step);
         return 0.0;
     }
+    unclipped = dt;
     const double target = std::min(nextOutput, c.endTime);
     if (t + dt > target * (1.0 - 1e-12))
         dt = target - t;
@@ -305,7 +307,8 @@ LoopResult runTimeLoop(TimeSystem& system, const TimeControl& c, MPI_Comm comm, 
                 break;
             }
             balance.startStep();
-            double dt = chooseStep(system, c, s.t, s.dtPrev, s.steps, s.nextOutput, r.failure);
+            double unclipped = 0.0;
+            double dt = chooseStep(system, c, s.t, s.dtPrev, s.steps, s.nextOutput, unclipped, r.failure);
             if (!r.failure.empty())
                 break;
             // Rejected steps (an inverted cell, an inadmissible state, an unconverged implicit solve) are retried
@@ -332,7 +335,9 @@ LoopResult runTimeLoop(TimeSystem& system, const TimeControl& c, MPI_Comm comm, 
                 *steps << s.steps + 1 << ',' << std::setprecision(12) << s.t + dt << ',' << dt << ',' << iterations
                        << ',' << attempt << '\n';
             s.t += dt;
-            s.dtPrev = dt;
+            // A step cut short by an output time does not hold back the next: the growth limit starts from the
+            // step it would have been (2D Sedov, 10 outputs, 4k cells, order 2: 703 steps against 579 without).
+            s.dtPrev = attempt == 0 ? unclipped : dt;
             ++s.steps;
             if (s.t >= s.nextOutput * (1.0 - 1e-12) && s.t < c.endTime * (1.0 - 1e-14))
             {

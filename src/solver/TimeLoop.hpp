@@ -98,7 +98,7 @@ struct RepartitionEvent
 struct LoopState
 {
     double t = 0.0;
-    double dtPrev = -1.0;     //!< the last accepted step (< 0: none yet, the first step is a fraction of the CFL one)
+    double dtPrev = -1.0;     //!< the last accepted step, before an output time cut it (< 0: none yet)
     double nextOutput = -1.0; //!< the next output time (< 0: the first one after t = 0)
     long steps = 0;
     int dumps = 0;   //!< dumps written so far (the next dump's index)
