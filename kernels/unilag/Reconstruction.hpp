@@ -214,7 +214,7 @@ struct MechanicalQuantities
         if (what == Reconstructed::All)
             return reconValues<D, P>(state, aux, stress, j, w);
         for (int q = 0; q < nq; ++q) // the traction is not fitted: not loaded either
-            w[q] = q < D ? state(j, StateLayout<D, P>::vel + q) : 0.0;
+            w[q] = q < ReconLayout<D, P>::pressure ? state(j, StateLayout<D, P>::vel + q) : 0.0;
     }
     //! Reconstructed::Velocity: the traction (pressure, shear stress: after the velocity) at cell values.
     KOKKOS_INLINE_FUNCTION Bounds bounds(Limiter limiter, int q) const
@@ -386,7 +386,7 @@ void limitedGradientsOf(const MeshView<D>& mesh, const Q& quantities, const Cell
         for (int q = 0; q < NQ; ++q)
         {
             const Bounds bounds = quantities.bounds(limiter, q);
-            if (q >= nFit || bounds == Bounds::CellValue)
+            if (bounds == Bounds::CellValue) // every q >= nFit too
             {
                 for (int a = 0; a < D; ++a)
                     grad(i, q * D + a) = 0.0;
