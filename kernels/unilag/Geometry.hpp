@@ -23,8 +23,12 @@ struct MeshView
     View<const LO*> nodeCorners;                                       //!< corner id = cell * NV + k, sorted by global cell id
     View<const int**> cellFaceGroup; //!< boundary group of face k of a cell, -1 if interior (LayoutRight default)
     View<const LO**> cellNeighbour;  //!< local cell across face k, -1 on the boundary (complete for owned cells)
+    View<const int*> nodeBoundary;   //!< 1 if a boundary face of a local cell holds the node (empty: not known)
     LO nOwnedCells = 0, nCells = 0;  //!< owned cells first, then ghosts
     LO nOwnedNodes = 0, nNodes = 0;  //!< owned nodes first, then the other nodes of local cells
+
+    //! Whether node r may lie on a boundary face: true where nodeBoundary was not given (callers then look).
+    KOKKOS_INLINE_FUNCTION bool mayBeOnBoundary(LO r) const { return nodeBoundary.extent(0) == 0 || nodeBoundary(r) != 0; }
 };
 
 //! Corner geometry of one simplex from its node positions.

@@ -330,6 +330,15 @@ void DistributedMesh::buildDeviceViews()
     using HostArray = Kokkos::View<const LO*, Kokkos::HostSpace, Kokkos::MemoryUnmanaged>;
     Kokkos::deep_copy(nodeCornerOffsets, HostArray(offsets.data(), offsets.size()));
     Kokkos::deep_copy(nodeCorners, HostArray(corners.data(), corners.size()));
+    nodeBoundary = View<int*>("unilag::nodeBoundary", nNodes);
+    auto onBoundary = Kokkos::create_mirror_view(nodeBoundary);
+    for (LO i = 0; i < nCells; ++i)
+        for (int f = 0; f < nv; ++f)
+            if (fg(i, f) >= 0)
+                for (int k = 0; k < nv; ++k)
+                    if (k != f) // face f is opposite local node f
+                        onBoundary(cn(i, k)) = 1;
+    Kokkos::deep_copy(nodeBoundary, onBoundary);
 }
 
 //! Output numbering: contiguous per rank for owned nodes, imported for the others.

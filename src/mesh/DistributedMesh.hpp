@@ -72,6 +72,7 @@ class DistributedMesh
     View<int**> cellFaceGroup;
     View<LO**> cellNeighbour; //!< local cell across face k (opposite local node k), -1 on the boundary or not local
     View<LO*> nodeCornerOffsets, nodeCorners;
+    View<int*> nodeBoundary; //!< 1 if a boundary face of a local cell holds the node (complete for owned cells' nodes)
 
     //! Output numbering: owned nodes get offset + local index; other local nodes that of their owner.
     long long nodeOutputOffset = 0;
@@ -86,6 +87,7 @@ class DistributedMesh
         m.nodeCorners = nodeCorners;
         m.cellFaceGroup = cellFaceGroup;
         m.cellNeighbour = cellNeighbour;
+        m.nodeBoundary = nodeBoundary;
         m.nOwnedCells = nOwnedCells;
         m.nCells = nCells;
         m.nOwnedNodes = nOwnedNodes;
