@@ -236,6 +236,26 @@ struct MechanicalQuantities
     }
 };
 
+/*! One cell of the least-squares stencil, at offset d from the centroid with values wj (cell i's: wi): its term of
+ *  A = sum w d d^T and of the right-hand sides of the fitted quantities, w = 1 / |d|^2, and (perVertex) the bounds of
+ *  the vertex it shares with cell i. */
+template <int D, int NQ>
+KOKKOS_INLINE_FUNCTION void addStencilCell(const Vec<D>& d, const double (&wj)[NQ], const double (&wi)[NQ], int nFit,
+                                           bool perVertex, Mat<D>& A, Vec<D> (&rhs)[NQ], double (&vmin)[NQ],
+                                           double (&vmax)[NQ])
+{
+    const double w = 1.0 / dot(d, d);
+    A.addOuter(w, d);
+    for (int q = 0; q < nFit; ++q)
+        rhs[q] = rhs[q] + (w * (wj[q] - wi[q])) * d;
+    if (perVertex)
+        for (int q = 0; q < nFit; ++q)
+        {
+            vmin[q] = Kokkos::Experimental::fmin(vmin[q], wj[q]);
+            vmax[q] = Kokkos::Experimental::fmax(vmax[q], wj[q]);
+        }
+}
+
 /*! The mirroring planes (slip walls, symmetry planes: the groups Q mirrors) through node r, gathered from the faces
  *  at r of one cell j around it (local vertex kj of j is r: the faces of j other than face kj contain r). A face whose
  *  normal is within ~45 degrees of a plane already found adds to it (a curved wall's faces at r); up to D planes. The
@@ -332,17 +352,8 @@ void limitedGradientsOf(const MeshView<D>& mesh, const Q& quantities, const Cell
                 Vec<D> d;
                 for (int a = 0; a < D; ++a)
                     d[a] = centroid(j, a) - xi[a];
-                const double w = 1.0 / dot(d, d);
-                A.addOuter(w, d);
                 quantities.values(j, wj);
-                for (int q = 0; q < nFit; ++q)
-                    rhs[q] = rhs[q] + (w * (wj[q] - wi[q])) * d;
-                if (perVertex)
-                    for (int q = 0; q < nFit; ++q)
-                    {
-                        vmin[k][q] = Kokkos::Experimental::fmin(vmin[k][q], wj[q]);
-                        vmax[k][q] = Kokkos::Experimental::fmax(vmax[k][q], wj[q]);
-                    }
+                addStencilCell<D, NQ>(d, wj, wi, nFit, perVertex, A, rhs, vmin[k], vmax[k]);
             }
             // A node on mirroring planes: the images of every cell around it (cell i's own included) across each
             // plane and their compositions join the stencil and the vertex's bounds, as the cells of the symmetric
@@ -369,16 +380,7 @@ void limitedGradientsOf(const MeshView<D>& mesh, const Q& quantities, const Cell
                         }
                     for (int a = 0; a < D; ++a)
                         d[a] += x(r, a) - xi[a];
-                    const double w = 1.0 / dot(d, d);
-                    A.addOuter(w, d);
-                    for (int q = 0; q < nFit; ++q)
-                        rhs[q] = rhs[q] + (w * (wj[q] - wi[q])) * d;
-                    if (perVertex)
-                        for (int q = 0; q < nFit; ++q)
-                        {
-                            vmin[k][q] = Kokkos::Experimental::fmin(vmin[k][q], wj[q]);
-                            vmax[k][q] = Kokkos::Experimental::fmax(vmax[k][q], wj[q]);
-                        }
+                    addStencilCell<D, NQ>(d, wj, wi, nFit, perVertex, A, rhs, vmin[k], vmax[k]);
                 }
             }
         }
