@@ -53,7 +53,7 @@ template <int D, class P> class GprOperator
     //! Before the first step: the lagged node velocities of the first impedance (meanCellVelocityAtNodes). Collective.
     void initialNodeVelocities()
     {
-        meanCellVelocityAtNodes<D, P>(md_.m, md_.read("state"), md_.write("v_node"));
+        meanCellVelocityAtNodes<D, P>(md_.m, md_.read("state"), md_.read("x"), md_.write("v_node"), md_.bc);
         halo("v_node");
     }
 

@@ -1,12 +1,14 @@
 #!/usr/bin/env python3
-"""Symmetry planes are the mirror problem (docs/gpr-model.md 3.3, "Symmetry planes"): Sedov's blast on the quadrant
-(2D) or octant (3D) of GEO meshed by gmsh at SIZE, with symmetry planes on the coordinate planes, against the same
-blast (2^D times the energy) on that mesh mirrored across the planes into the whole square or cube, which has no
-planes. Every cell of the quadrant must have the density of its copy in the mirrored mesh to MAX_REL_DIFF (relative)
-at every output: the nodal solver, the walls and, at order 2, the reconstruction (the mirror images in the stencil
-and the bounds) must treat a plane as the mirrored flow does. The outer sides are slip walls in both runs.
+"""Symmetry planes are the mirror problem (docs/gpr-model.md 3.3, "Symmetry planes"): a flow on the quadrant (2D) or
+octant (3D) of GEO meshed by gmsh at SIZE, with symmetry planes on the coordinate planes, against the same flow on
+that mesh mirrored across the planes into the whole square or cube, which has no planes. Every cell of the quadrant
+must have the density of its copy in the mirrored mesh to MAX_REL_DIFF (relative) at every output: the nodal solver,
+the walls, the first step's lagged node velocities and, at order 2, the reconstruction (the mirror images in the
+stencil and the bounds) must treat a plane as the mirrored flow does. FLOW:
+  sedov  Sedov's blast (2^D times the energy in the whole), slip-wall outer sides, to t = 0.3;
+  noh    Noh's cold implosion (gamma 5/3, p = 0, v = -x/|x|), free outer sides, to t = 0.3.
 
-usage: symmetry_mirror.py UNILAG GEO SIZE WORKDIR MAX_REL_DIFF [--set key=value ...]
+usage: symmetry_mirror.py UNILAG GEO SIZE WORKDIR MAX_REL_DIFF FLOW [--set key=value ...]
 """
 import glob
 import itertools
@@ -82,20 +84,32 @@ def mirror_mesh(src, dst, dim):
     return [name for name in names.values() if name not in ("outer", "gas")]
 
 
-def scene(path, msh, dim, energy, planes):
+def scene(path, msh, dim, flow, parts, planes):
+    """The scene of FLOW on mesh msh, which holds `parts` of the 2^dim quadrants or octants."""
     zero = ", ".join(["0.0"] * dim)
     bcs = "".join(f"    {name}: {{ type: symmetry }}\n" for name in planes)
+    if flow == "sedov":
+        gas = f"""  materials:
+    gas: {{ eos: ideal_gas, gamma: 1.4 }}
+  regions:
+    gas: {{ material: gas, density: 1.0, velocity: [{zero}], pressure: 1.0e-6 }}
+  energy_deposit: {{ position: [{zero}], energy: {ENERGY[dim] * parts!r} }}
+"""
+        outer = "slip_wall"
+    else:
+        inward = ", ".join(f'"-{c} / max(r, 1e-12)"' for c in "xyz"[:dim])
+        gas = f"""  materials:
+    gas: {{ eos: ideal_gas, gamma: 1.6666666666666667 }}
+  regions:
+    gas: {{ material: gas, density: 1.0, velocity: [{inward}], pressure: 0.0 }}
+"""
+        outer = "free"
     with open(path, "w") as f:
         f.write(f"""unilag:
   title: symmetry_mirror
   mesh: {{ file: {msh} }}
-  materials:
-    gas: {{ eos: ideal_gas, gamma: 1.4 }}
-  regions:
-    gas: {{ material: gas, density: 1.0, velocity: [{zero}], pressure: 1.0e-6 }}
-  energy_deposit: {{ position: [{zero}], energy: {energy!r} }}
-  boundaries:
-{bcs}    outer: {{ type: slip_wall }}
+{gas}  boundaries:
+{bcs}    outer: {{ type: {outer} }}
   time: {{ end: 0.3, cfl: 0.4 }}
   output: {{ directory: out, interval: 0.1 }}
 """)
@@ -108,10 +122,10 @@ def centroids(path):
 
 
 def main():
-    if len(sys.argv) < 6:
+    if len(sys.argv) < 7 or sys.argv[6] not in ("sedov", "noh"):
         sys.exit(__doc__)
-    unilag, geo, size, work, bound = sys.argv[1], sys.argv[2], sys.argv[3], sys.argv[4], float(sys.argv[5])
-    sets = sys.argv[6:]
+    unilag, geo, size, work, bound, flow = sys.argv[1:5] + [float(sys.argv[5]), sys.argv[6]]
+    sets = sys.argv[7:]
     os.makedirs(work, exist_ok=True)
     dim = 3 if "Box" in open(geo).read() or "Volume" in open(geo).read() else 2
     quadrant, whole = f"{work}/part.msh", f"{work}/whole.msh"
@@ -121,9 +135,8 @@ def main():
                     "-setnumber", "Mesh.MeshSizeExtendFromBoundary", "0"], check=True)
     planes = mirror_mesh(quadrant, whole, dim)
     runs = {}
-    for name, msh, energy, bcs in (("part", quadrant, ENERGY[dim], planes),
-                                   ("whole", whole, ENERGY[dim] * 2 ** dim, [])):
-        scene(f"{work}/{name}.yaml", msh, dim, energy, bcs)
+    for name, msh, parts, bcs in (("part", quadrant, 1, planes), ("whole", whole, 2 ** dim, [])):
+        scene(f"{work}/{name}.yaml", msh, dim, flow, parts, bcs)
         out = f"{work}/{name}_out"
         subprocess.run([unilag, "run", f"{work}/{name}.yaml", "--quiet", "--output", out] + sets, check=True)
         runs[name] = sorted(glob.glob(f"{out}/unilag_*.h5"))
@@ -138,7 +151,7 @@ def main():
             rho_a, rho_b = fa["density"][:, 0], fb["density"][:, 0][match]
         worst = max(worst, float(np.max(np.abs(rho_a - rho_b) / rho_b)))
     ok = ok and worst <= bound
-    print(f"{dim}D, {len(match)} cells against {2 ** dim} x: largest relative density difference {worst:.3g} "
+    print(f"{flow}, {dim}D, {len(match)} cells against {2 ** dim} x: largest relative density difference {worst:.3g} "
           f"(bound {bound:g}) over {len(runs['part'])} outputs")
     print("symmetry_mirror:", "PASS" if ok else "FAIL")
     sys.exit(0 if ok else 1)
