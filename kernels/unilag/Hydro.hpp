@@ -400,17 +400,7 @@ void nodalSolve(const MeshView<D>& mesh, const BoundaryView& bc, const ConstFiel
             // then solve (Proj M Proj + Q Q^T) v = Proj b with Proj = I - Q Q^T, which gives Q^T v = 0 exactly in exact
             // arithmetic and the Maire wall solution in the free directions.
             Vec<D> Q[D];
-            int nq = 0;
-            for (int s = 0; s < nSlip && nq < D; ++s)
-            {
-                Vec<D> u = slipNormal[s];
-                const double len0 = norm(u);
-                for (int a = 0; a < nq; ++a)
-                    u = u - dot(u, Q[a]) * Q[a];
-                const double len = norm(u);
-                if (len > 1e-8 * len0)
-                    Q[nq++] = (1.0 / len) * u;
-            }
+            const int nq = orthonormalBasis<D>(slipNormal, nSlip, Q);
             if (nq == D)
             {
                 v = Vec<D>::zero();

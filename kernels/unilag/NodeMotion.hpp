@@ -53,11 +53,10 @@ void meanCellVelocityAtNodes(const MeshView<D>& mesh, const ConstField& state, c
             for (LO q = first; q < last; ++q)
                 addMirrorPlanes<D>(mesh, SlipWallGroups{bc}, x, mesh.nodeCorners(q) / (D + 1),
                                    mesh.nodeCorners(q) % (D + 1), plane, nPlanes);
-        for (int p = 0; p < nPlanes; ++p) // the planes at a node are orthogonal or clustered into one (quadrant, octant)
-        {
-            const Vec<D> n = (1.0 / norm(plane[p])) * plane[p];
-            v = v - dot(v, n) * n;
-        }
+        Vec<D> Q[D]; // orthonormalised as the nodal solver does, so that non-orthogonal planes leave no normal part
+        const int nq = orthonormalBasis<D>(plane, nPlanes, Q);
+        for (int a = 0; a < nq; ++a)
+            v = v - dot(v, Q[a]) * Q[a];
         for (int d = 0; d < D; ++d)
             vnode(r, d) = v[d];
     };

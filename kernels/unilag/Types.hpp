@@ -83,6 +83,26 @@ KOKKOS_INLINE_FUNCTION double norm(const Vec<D>& a)
     return Kokkos::Experimental::sqrt(dot(a, a));
 }
 
+/*! \brief Orthonormal basis Q[0, returned) of the span of the n vectors u (Gram-Schmidt, in order): a vector whose
+ *  part orthogonal to the earlier ones is below 1e-8 of its length adds nothing (parallel walls count once). Exact
+ *  copies of orthogonal unit inputs for axis-aligned planes, so results there do not change by round-off. */
+template <int D>
+KOKKOS_INLINE_FUNCTION int orthonormalBasis(const Vec<D>* u, int n, Vec<D> (&Q)[D])
+{
+    int nq = 0;
+    for (int s = 0; s < n && nq < D; ++s)
+    {
+        Vec<D> w = u[s];
+        const double len0 = norm(w);
+        for (int a = 0; a < nq; ++a)
+            w = w - dot(w, Q[a]) * Q[a];
+        const double len = norm(w);
+        if (len > 1e-8 * len0)
+            Q[nq++] = (1.0 / len) * w;
+    }
+    return nq;
+}
+
 //! Symmetric D x D matrix stored full (D <= 3 keeps this in registers).
 template <int D>
 struct Mat

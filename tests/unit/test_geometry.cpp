@@ -487,3 +487,43 @@ TYPED_TEST(SimplexTest, ComputeGeometryFlagsInvertedCell)
             EXPECT_GT(vol(i), 0.0) << "cell " << i;
         }
 }
+
+// ---- orthonormalBasis: the slip-plane normals of the nodal solver and of the first lagged node velocity ----
+
+TEST(OrthonormalBasis, NonOrthogonalPlanesSpanTheirNormals)
+{
+    // Two walls at 60 degrees and a third parallel to the first (counts once): the basis spans both normals, is
+    // orthonormal, and removing it from a vector leaves no component along either wall's normal.
+    const double c = std::cos(M_PI / 3.0), s = std::sin(M_PI / 3.0);
+    const Vec<3> u[3] = {{{2.0, 0.0, 0.0}}, {{c, s, 0.0}}, {{-5.0, 0.0, 0.0}}};
+    Vec<3> Q[3];
+    const int nq = unilag::orthonormalBasis<3>(u, 3, Q);
+    ASSERT_EQ(nq, 2);
+    for (int a = 0; a < nq; ++a)
+        for (int b = 0; b < nq; ++b)
+            EXPECT_NEAR(unilag::dot(Q[a], Q[b]), a == b ? 1.0 : 0.0, 1e-15);
+    Vec<3> v = {{0.3, -1.7, 2.5}};
+    for (int a = 0; a < nq; ++a)
+        v = v - unilag::dot(v, Q[a]) * Q[a];
+    for (const Vec<3>& n : u)
+        EXPECT_NEAR(unilag::dot(v, n), 0.0, 1e-14);
+    EXPECT_NEAR(v[2], 2.5, 1e-15); // the direction along both walls is kept
+    // Plane by plane projection (the earlier first lagged velocity) leaves part of the first normal:
+    Vec<3> w = {{0.3, -1.7, 2.5}};
+    for (int p = 0; p < 2; ++p)
+        w = w - unilag::dot(w, (1.0 / unilag::norm(u[p])) * u[p]) * ((1.0 / unilag::norm(u[p])) * u[p]);
+    EXPECT_GT(std::abs(unilag::dot(w, u[0])), 0.1);
+}
+
+TEST(OrthonormalBasis, AxisPlanesAreCopiedExactly)
+{
+    // The quadrant's and octant's planes: the basis is the unit normals themselves, bit for bit.
+    const Vec<3> u[3] = {{{0.0, -0.7, 0.0}}, {{0.3, 0.0, 0.0}}, {{0.0, 0.0, -2.0}}};
+    Vec<3> Q[3];
+    ASSERT_EQ(unilag::orthonormalBasis<3>(u, 3, Q), 3);
+    EXPECT_EQ(Q[0][1], -1.0);
+    EXPECT_EQ(Q[1][0], 1.0);
+    EXPECT_EQ(Q[2][2], -1.0);
+    EXPECT_EQ(Q[0][0], 0.0);
+    EXPECT_EQ(Q[1][1], 0.0);
+}
