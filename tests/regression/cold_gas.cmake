@@ -76,13 +76,14 @@ foreach(mode o1 o2 ars)
   set_tests_properties(piston_cold2d_${mode}_check PROPERTIES FIXTURES_REQUIRED piston_${mode} LABELS "gpr;regression")
 endforeach()
 
-# The same cold piston on triangles of three orientations (apps/shock_orientation_study.py, docs/sedov.md, session 14):
-# an equilateral lattice with an edge family along the motion must give the exact shocked state cell by cell
-# (measured scatter 0.01% / 0.03%, worst cell 0.04% / 0.14%, orders 1 / 2; bound 0.5%), and every mesh the exact
-# mean density within 1.5% (measured: lattice 4.0001 / 4.0000, gmsh strip 4.036 / 4.044, turned lattice 4.025 /
-# 4.033). Not asserted, the open defect: where an edge family is parallel to the front the two triangle
-# orientations leave the shock with different entropies (density scatter 9.4% / 10.5% on the strip, 5.5% / 7.1% on
-# the turned lattice).
+# The same cold piston on triangles of three orientations (apps/shock_orientation_study.py, docs/sedov.md, session 14),
+# order 1 and three order-2 schemes. Asserted: an equilateral lattice with an edge family along the motion gives the
+# exact shocked state cell by cell (measured scatter 0.01-0.07%, worst cell 0.04-0.29%), and so does the strip with
+# vertex_based and all reconstructed (0.29%, worst 0.54%); bound 1%. Every run's mean density within 1.5% of 4
+# (measured 4.0000-4.044), but the velocity-only scheme's (4.08-4.11, reported). Not asserted, the open defect: where
+# an edge family is parallel to the front the two triangle orientations leave the shock with different entropies
+# (scatter on the strip: order 1 9.4%, barth_jespersen 10.5%, velocity alone 16.5%; turned lattice 5.5%, 7.1%,
+# 3.5% with vertex_based, 13.6%).
 add_test(NAME piston_orientation COMMAND ${PYTHON} ${PROJECT_SOURCE_DIR}/apps/shock_orientation_study.py ${UNILAG}
-         ${WORK}/piston_orientation.csv 0.005 --check 1.5 0.5)
+         ${WORK}/piston_orientation.csv 0.005 --check 1.5 1.0)
 set_tests_properties(piston_orientation PROPERTIES LABELS "gpr;regression")
