@@ -31,6 +31,8 @@
  */
 #pragma once
 
+#include <optional>
+
 #include "unilag/Geometry.hpp"
 #include "unilag/Physics.hpp"
 
@@ -210,6 +212,8 @@ struct MechanicalQuantities
     ConstField state, aux, stress;
     BoundaryView bc;
     Reconstructed what = Reconstructed::All;
+    bool ownTractionLimiter = false; //!< scheme.pressure_limiter given: the traction's own bounds
+    Limiter tractionLimiter = Limiter::BarthJespersen;
 
     KOKKOS_INLINE_FUNCTION void values(LO j, double (&w)[nq]) const
     {
@@ -218,12 +222,16 @@ struct MechanicalQuantities
         for (int q = 0; q < nq; ++q) // the traction is not fitted: not loaded either
             w[q] = q < ReconLayout<D, P>::pressure ? state(j, StateLayout<D, P>::vel + q) : 0.0;
     }
-    //! Reconstructed::Velocity: the traction (pressure, shear stress: after the velocity) at cell values.
+    /*! Reconstructed::Velocity: the traction (pressure, shear stress: after the velocity) at cell values; with its
+     *  own limiter, the traction bounded by that one (vertex bounds on the pressure keep a strong shock along mesh
+     *  edges from scattering the entropy of the two triangle orientations: docs/sedov.md, session 14). */
     KOKKOS_INLINE_FUNCTION Bounds bounds(Limiter limiter, int q) const
     {
-        if (what == Reconstructed::Velocity && q >= ReconLayout<D, P>::pressure)
+        if (q < ReconLayout<D, P>::pressure)
+            return uniformBounds(limiter);
+        if (what == Reconstructed::Velocity)
             return Bounds::CellValue;
-        return uniformBounds(limiter);
+        return uniformBounds(ownTractionLimiter ? tractionLimiter : limiter);
     }
     KOKKOS_INLINE_FUNCTION bool mirrors(int g) const { return bc.type(g) == BcSlipWall; }
     KOKKOS_INLINE_FUNCTION void mirror(const Vec<D>& n, double (&w)[nq]) const { mirrorValues<D, P>(n, w); }
@@ -516,14 +524,18 @@ inline void dropFlaggedGradients(const Field& grad, const ConstField& flags, LO 
 
 /*! \brief Limited gradients of velocity, pressure and (strain variants) the shear stress `stress` into grad (cells x
  *  ReconLayout::ncomp): limitedGradientsOf with MechanicalQuantities (slip walls and symmetry planes mirror the cell,
- *  an imposed boundary pressure is boundary data). */
+ *  an imposed boundary pressure is boundary data). tractionLimiter: the pressure's and shear stress's own limiter
+ *  (scheme.pressure_limiter), else limiter's. */
 template <int D, class P>
 void limitedGradients(const MeshView<D>& mesh, const ConstField& state, const ConstField& aux,
                       const ConstField& stress, const CellGeometry& geom, const ConstField& x, const Field& grad,
                       const BoundaryView& bc = BoundaryView(), Limiter limiter = Limiter::BarthJespersen,
-                      Reconstructed what = Reconstructed::All)
+                      Reconstructed what = Reconstructed::All, std::optional<Limiter> tractionLimiter = std::nullopt)
 {
-    limitedGradientsOf<D>(mesh, MechanicalQuantities<D, P>{state, aux, stress, bc, what}, geom, x, grad, bc, limiter);
+    MechanicalQuantities<D, P> quantities{state, aux, stress, bc, what};
+    quantities.ownTractionLimiter = tractionLimiter.has_value();
+    quantities.tractionLimiter = tractionLimiter.value_or(limiter);
+    limitedGradientsOf<D>(mesh, quantities, geom, x, grad, bc, limiter);
 }
 
 } // namespace unilag

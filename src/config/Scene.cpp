@@ -314,14 +314,18 @@ void readScheme(ConfigNode& root, Scene& s)
     s.picardTolerance = sch.positive("picard_tolerance", s.picardTolerance);
     s.picardMaxIterations = int(sch.integer("picard_max_iterations", s.picardMaxIterations, 1, 1000000));
     s.order = int(sch.integer("order", s.order, 1, 2));
-    s.limiter = sch.option<Limiter>("limiter", "barth_jespersen",
-                                    {{"barth_jespersen", Limiter::BarthJespersen},
-                                     {"vertex_based", Limiter::VertexBased},
-                                     {"none", Limiter::None}});
+    const std::vector<std::pair<std::string, Limiter>> limiters = {{"barth_jespersen", Limiter::BarthJespersen},
+                                                                    {"vertex_based", Limiter::VertexBased},
+                                                                    {"none", Limiter::None}};
+    s.limiter = sch.option<Limiter>("limiter", "barth_jespersen", limiters);
+    if (sch.has("pressure_limiter"))
+        s.pressureLimiter = sch.option<Limiter>("pressure_limiter", "", limiters);
     s.reconstruct = sch.option<Reconstructed>("reconstruct", "all",
                                               {{"all", Reconstructed::All}, {"velocity", Reconstructed::Velocity}});
     s.integrator = sch.option<Integrator>("integrator", "midpoint",
                                           {{"midpoint", Integrator::Midpoint}, {"ars222", Integrator::Ars222}});
+    if (s.pressureLimiter && s.reconstruct == Reconstructed::Velocity)
+        sch.fail("pressure_limiter", "the pressure is not reconstructed with reconstruct: velocity");
     if (s.integrator == Integrator::Ars222 && s.order != 2)
         sch.fail("integrator", "ars222 is a second-order integrator: it needs scheme.order: 2");
     sch.rejectUnknown();

@@ -10,6 +10,7 @@
 #include <algorithm>
 #include <array>
 #include <map>
+#include <optional>
 #include <stdexcept>
 #include <string>
 #include <vector>
@@ -149,6 +150,7 @@ struct Scene
     int picardMaxIterations = 50;   //!< cap: the step is cut and retried when it is reached
     int order = 1;                  //!< 1: first order; 2: limited linear reconstruction + midpoint predictor-corrector
     Limiter limiter = Limiter::BarthJespersen; //!< order 2 only
+    std::optional<Limiter> pressureLimiter; //!< order 2: the pressure's and shear stress's own (else limiter)
     Reconstructed reconstruct = Reconstructed::All; //!< order 2 only: every quantity, or the velocity alone
     Integrator integrator = Integrator::Midpoint; //!< order 2 only (ars222 is rejected at order 1)
 

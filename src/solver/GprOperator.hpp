@@ -98,7 +98,7 @@ template <int D, class P> class GprOperator
             ScopedTimer timer(md_.timers, Phase::Reconstruction);
             limitedGradients<D, P>(md_.m, md_.read("state"), md_.aux, stressIterate(), md_.geom, md_.read("x"),
                                    md_.write("gradients_n"), md_.bc, md_.limiter,
-                                   md_.reconstruct);
+                                   md_.reconstruct, md_.pressureLimiter);
             if (fallbackMarked_)
                 dropFlaggedGradients(md_.write("gradients_n"), md_.read("first_order"), md_.m.nOwnedCells);
         }

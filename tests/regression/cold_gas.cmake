@@ -77,10 +77,11 @@ foreach(mode o1 o2 ars)
 endforeach()
 
 # The same cold piston on triangles of three orientations (apps/shock_orientation_study.py, docs/sedov.md, session 14),
-# order 1 and three order-2 schemes. Asserted: an equilateral lattice with an edge family along the motion gives the
+# order 1 and four order-2 schemes. Asserted: an equilateral lattice with an edge family along the motion gives the
 # exact shocked state cell by cell (measured scatter 0.01-0.07%, worst cell 0.04-0.29%), and so does the strip with
 # vertex_based and all reconstructed (0.29%, worst 0.54%); bound 1%. Every run's mean density within 1.5% of 4
-# (measured 4.0000-4.044), but the velocity-only scheme's (4.08-4.11, reported). Not asserted, the open defect: where
+# (measured 4.0000-4.044), but the velocity-only scheme's (4.08-4.11, reported); pressure_limiter: vertex_based must
+# halve order 1's scatter on the strip (measured 3.42% against 9.42%). Not asserted, the open defect: where
 # an edge family is parallel to the front the two triangle orientations leave the shock with different entropies
 # (scatter on the strip: order 1 9.4%, barth_jespersen 10.5%, velocity alone 16.5%; turned lattice 5.5%, 7.1%,
 # 3.5% with vertex_based, 13.6%).

@@ -13,6 +13,10 @@ add_test(NAME error_missing_mesh COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}
 add_test(NAME error_limiter COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err7
          "sedov2d.yaml: key 'scheme.limiter': 'minmod' is not one of: barth_jespersen, vertex_based, none"
          -- ${UNILAG} run ${INPUTS}/sedov2d.yaml --set scheme.limiter=minmod)
+# scheme.pressure_limiter bounds a reconstructed pressure: with reconstruct: velocity there is none.
+add_test(NAME error_pressure_limiter COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err8
+         "sedov2d.yaml: key 'scheme.pressure_limiter': the pressure is not reconstructed with reconstruct: velocity"
+         -- ${UNILAG} run ${INPUTS}/sedov2d.yaml --set scheme.pressure_limiter=vertex_based)
 add_test(NAME error_mpi_unknown_key COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err6 "key 'time.max_stpes'"
          -- ${MPI_RUN} 2 ${UNILAG} run ${SCENES}/unknown_key.yaml)
 # Bad physical input of the GPR model: the scene reader names the key before the solver starts.
