@@ -30,6 +30,8 @@ import tempfile
 import h5py
 import numpy as np
 
+from msh22 import write_msh22
+
 SCENE = """unilag:
   title: piston_orientation
   mesh: {mesh}
@@ -88,17 +90,9 @@ def lattice_msh(path, h, height, edges_along_x):
         xy = nodes[:, ::-1] + [X0, 0.0]
         tris = [(t[0], t[2], t[1]) for t in tris]
     tags = {"left": 1, "right": 2, "top": 3, "bottom": 4}
-    lines = ["$MeshFormat", "2.2 0 8", "$EndMeshFormat", "$PhysicalNames", "5"]
-    lines += [f'1 {t} "{n}"' for n, t in tags.items()] + ['2 5 "gas"', "$EndPhysicalNames", "$Nodes", str(len(xy))]
-    lines += [f"{i + 1} {x:.17g} {y:.17g} 0" for i, (x, y) in enumerate(xy)]
-    elems = [(1, tags[names[s]], p, q) for s, segs in sides.items() for p, q in segs]
-    elems += [(2, 5) + t for t in tris]
-    lines += ["$EndNodes", "$Elements", str(len(elems))]
-    for n, e in enumerate(elems):
-        lines.append(f"{n + 1} {e[0]} 2 {e[1]} {e[1]} " + " ".join(str(v + 1) for v in e[2:]))
-    lines.append("$EndElements")
-    with open(path, "w") as f:
-        f.write("\n".join(lines) + "\n")
+    elements = [(1, tags[names[s]], (p + 1, q + 1)) for s, segs in sides.items() for p, q in segs]
+    elements += [(2, 5, tuple(v + 1 for v in t)) for t in tris]
+    write_msh22(path, [(1, t, n) for n, t in tags.items()] + [(2, 5, "gas")], [tuple(p) for p in xy], elements)
 
 
 def behind_shock(out):

@@ -19,6 +19,9 @@ import sys
 import h5py
 import numpy as np
 
+sys.path.insert(0, os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "..", "apps"))
+from msh22 import write_msh22  # noqa: E402
+
 ENERGY = {2: 0.244816, 3: 0.106384}  # the quadrant's / octant's share, as inputs/sedov2d.yaml and sedov3d.yaml
 FACE_TYPE, CELL_TYPE = {2: 1, 3: 2}, {2: 2, 3: 4}  # gmsh element types: line, triangle / triangle, tetrahedron
 
@@ -70,17 +73,8 @@ def mirror_mesh(src, dst, dim):
             if flip:
                 mapped[0], mapped[1] = mapped[1], mapped[0]
             target.append(mapped)
-    with open(dst, "w") as f:
-        f.write('$MeshFormat\n2.2 0 8\n$EndMeshFormat\n$PhysicalNames\n2\n')
-        f.write(f'{dim - 1} 1 "outer"\n{dim} 2 "gas"\n$EndPhysicalNames\n$Nodes\n{len(coords)}\n')
-        for k, x in enumerate(coords):
-            f.write(f"{k + 1} {x[0]!r} {x[1]!r} {x[2]!r}\n")
-        f.write(f"$EndNodes\n$Elements\n{len(faces) + len(cells)}\n")
-        for e, a in enumerate(faces):
-            f.write(f"{e + 1} {FACE_TYPE[dim]} 2 1 1 " + " ".join(map(str, a)) + "\n")
-        for e, a in enumerate(cells):
-            f.write(f"{len(faces) + e + 1} {CELL_TYPE[dim]} 2 2 2 " + " ".join(map(str, a)) + "\n")
-        f.write("$EndElements\n")
+    write_msh22(dst, [(dim - 1, 1, "outer"), (dim, 2, "gas")], coords,
+                [(FACE_TYPE[dim], 1, a) for a in faces] + [(CELL_TYPE[dim], 2, a) for a in cells])
     return [name for name in names.values() if name not in ("outer", "gas")]
 
 
