@@ -353,6 +353,7 @@ void readParallel(ConfigNode& root, Scene& s)
     s.earlyBalanceInterval = p.integer("early_check_interval", s.earlyChecks(), 1, 2000000000L);
     s.imbalanceThreshold = p.nonNegative("imbalance_threshold", s.imbalanceThreshold);
     s.repartition = p.boolean("repartition", s.repartition);
+    s.rankSpeeds = p.boolean("rank_speeds", s.rankSpeeds);
     s.partitioner = p.option<std::string>("partitioner", s.partitioner,
                                           {{"multijagged", "multijagged"}, {"rcb", "rcb"}, {"sfc", "sfc"}});
     p.rejectUnknown();

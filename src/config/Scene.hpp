@@ -165,6 +165,7 @@ struct Scene
     long earlyBalanceInterval = -1;  //!< steps between checks in the first interval (-1: earlyChecks())
     double imbalanceThreshold = 1.1; //!< repartition when max / mean of the busy times exceeds it (< 1: always)
     bool repartition = true;         //!< false: measure and report only
+    bool rankSpeeds = true;          //!< weigh each rank's cells by its measured speed (TimeControl::rankSpeeds)
     //! The early checks' interval: the scene's, or by default a fifth of the check interval (at least 1).
     long earlyChecks() const
     {

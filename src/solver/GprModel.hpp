@@ -7,7 +7,8 @@
  *   cells  state (omega, v, E[, G_e][, J]: StateLayout), mass, material (index, as a double), sigma_prev
  *          (strain: the Picard start's history), sigma_prev2 (strain, order 2), plastic_hint (plastic: each cell's
  *          last plastic-flow parameter), plastic_hint_corrector (plastic, order 2); scratch: plastic_work (plastic:
- *          each cell's plastic-law evaluations since the last partition, the load balance's cost), state_new, sigma
+ *          each cell's plastic-law evaluations since the last partition, the load balance's cost; plastic_rate:
+ *          their rate per step over the last load-balance window, carried through repartitions), state_new, sigma
  *          (the stress iterate), sigma_next, sigma0, state_mid, gradients (midpoint),
  *          gradients_n (order 2: the state at t^n), heat_gradients, heat_gradients_n (order 2, heat: theta,
  *          eps, J of the midpoint and of t^n);
@@ -140,7 +141,10 @@ GprModel<D, P>::GprModel(const Scene& scene_, std::shared_ptr<DistributedMesh> m
                     Kokkos::deep_copy(column(fields[f]), std::numeric_limits<double>::quiet_NaN());
                 }
         if constexpr (P::plastic)
+        {
             fields.add("plastic_work", Entity::Cell, 1, S_); // the load balance's cost (GprSystem::cellCosts)
+            fields.add("plastic_rate", Entity::Cell, 1, S_); // its last window's rate per step (predictedTimes)
+        }
     }
     if (P::strain || order2)
         fields.add("v_node0", Entity::Node, D, S_);

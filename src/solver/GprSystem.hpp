@@ -123,13 +123,13 @@ template <int D, class P> class GprSystem : public TimeSystem
     }
 
     /*! New owners by the scene's partitioner (balancedOwners: Zoltan2 on the cells' current centroids, or the
-     *  curve), weighted by cellCosts(); the mesh rebuilt on them, the fields migrated (with the lagged node
-     *  velocities), the operator's node lists and the writer's topology renewed, geometry and EOS recomputed: the
+     *  curve), weighted by predictedTimes(); the mesh rebuilt on them, the fields migrated (with the lagged node
+     *  velocities and the cells' last plastic work rates), the operator's node lists and the writer's topology renewed, geometry and EOS recomputed: the
      *  next step is bitwise what it would have been. Collective. */
     long repartition() override
     {
         const auto& old = *md_.mesh;
-        const std::vector<int> owner = balancedOwners(old, md_.fields["x"], cellCosts(), md_.scene.partitioner);
+        const std::vector<int> owner = balancedOwners(old, md_.fields["x"], predictedTimes(true), md_.scene.partitioner);
         double moved[1] = {0.0};
         for (LO i = 0; i < old.nOwnedCells; ++i)
             moved[0] += owner[i] != md_.rank ? 1.0 : 0.0;
@@ -138,6 +138,8 @@ template <int D, class P> class GprSystem : public TimeSystem
         std::vector<std::string> carry;
         if (md_.fields.has(lagged()))
             carry.push_back(lagged());
+        if constexpr (P::plastic)
+            carry.push_back("plastic_rate");
         md_.remesh(mesh, carry);
         op_.selectBalanceNodes(checkEveryNode_);
         op_.onNewMesh();
@@ -148,10 +150,36 @@ template <int D, class P> class GprSystem : public TimeSystem
         stepsSincePartition_ = 0;
         stepsAtLastCall_ = intervalSteps_ = 0; // plastic_work starts again from zero on the new mesh
         workAtLastCall_.clear();
+        intervalWork_.clear();
         return long(moved[0]);
     }
 
-    double modelImbalance() override { return costImbalance(*md_.mesh, cellCosts()); }
+    //! The model's imbalance of the window just measured (what the check compares with the clock).
+    double modelImbalance() override { return costImbalance(*md_.mesh, predictedTimes(false)); }
+    double forecastImbalance() override { return costImbalance(*md_.mesh, predictedTimes(true)); }
+    void setRankSpeed(double relative) override { rankSpeed_ = relative; }
+
+    /*! Each owned cell's busy time per step: its cost over this rank's relative speed (1 unless the scene's
+     *  parallel.rank_speeds measures them). Zoltan2's multijagged takes no part sizes, so a slow rank's cells weigh
+     *  more instead: exact for the cells a repartition leaves on their rank, which are nearly all of them (the parts
+     *  keep their places and ids). forecast: the next window's (a plastic zone that forms or moves changes the
+     *  cells' costs within a window, so a partition by the last window's is behind): each cell's plastic work rate
+     *  extrapolated linearly from its last two windows, 2 r_last - r_before (at least 0). */
+    std::vector<double> predictedTimes(bool forecast) const
+    {
+        std::vector<double> t = cellCosts();
+        const bool trend = forecast && intervalSteps_ > 0 && intervalWork_.size() == t.size() &&
+                           previousRate_.size() == t.size();
+        for (std::size_t i = 0; i < t.size(); ++i)
+        {
+            if (trend) // cellCosts holds r_last once: add r_last - r_before
+                t[i] += plasticWorkCost_ *
+                        std::max(-intervalWork_[i] / double(intervalSteps_),
+                                 intervalWork_[i] / double(intervalSteps_) - previousRate_[i]);
+            t[i] /= rankSpeed_;
+        }
+        return t;
+    }
 
     /*! Each owned cell's cost per step, in units of a cell-step without plastic flow: 1 + plasticWorkCost_ times its
      *  units of plastic work per step (GprModel::plasticWork) over the last load-balance interval (costTerms), or
@@ -199,6 +227,10 @@ template <int D, class P> class GprSystem : public TimeSystem
             return {cellSteps};
         auto work = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), md_.plasticWork());
         workAtLastCall_.resize(std::size_t(n), 0.0);
+        // the window before's rates (carried through repartitions; 0 at the start of a run or restart) out, this
+        // window's in
+        auto rate = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), column(md_.fields["plastic_rate"]));
+        previousRate_.assign(rate.data(), rate.data() + n);
         intervalWork_.resize(std::size_t(n));
         double total = 0.0;
         for (LO i = 0; i < n; ++i)
@@ -206,7 +238,9 @@ template <int D, class P> class GprSystem : public TimeSystem
             intervalWork_[i] = work(i) - workAtLastCall_[i];
             workAtLastCall_[i] = work(i);
             total += intervalWork_[i];
+            rate(i) = intervalSteps_ > 0 ? intervalWork_[i] / double(intervalSteps_) : 0.0;
         }
+        Kokkos::deep_copy(column(md_.fields["plastic_rate"]), rate);
         return {cellSteps, total};
     }
 
@@ -352,6 +386,8 @@ template <int D, class P> class GprSystem : public TimeSystem
      *  rank through the impact scene (4.7k cells, one thread, a check every 25 steps): 0.08-0.12; docs/parallel.md. */
     static constexpr double plasticWorkCost = 0.1;
     double plasticWorkCost_ = plasticWorkCost; //!< refitted at each load-balance check (CostFit)
+    double rankSpeed_ = 1.0;                   //!< setRankSpeed
+    std::vector<double> previousRate_;         //!< costTerms: plastic_rate of the window before the last
     long stepsAtLastCall_ = 0, intervalSteps_ = 0; //!< costTerms: stepsSincePartition_ at its last call, and since
     std::vector<double> workAtLastCall_, intervalWork_; //!< costTerms: plastic_work at its last call, and since
     std::unique_ptr<io::XdmfWriter> writer_;

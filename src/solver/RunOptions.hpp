@@ -38,6 +38,7 @@ inline TimeControl timeControl(const Scene& scene, const RunOptions& options)
     c.earlyBalanceInterval = scene.earlyChecks();
     c.imbalanceThreshold = scene.imbalanceThreshold;
     c.repartition = scene.repartition;
+    c.rankSpeeds = scene.rankSpeeds;
     c.balanceCsv = (std::filesystem::path(scene.outputDirectory) / "balance.csv").string();
     return c;
 }

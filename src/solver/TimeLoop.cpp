@@ -64,8 +64,10 @@ class StopOnSignal
  *  the first balanceInterval of a run or restart (the start-up partition balances cells, not their cost, which
  *  shows as the first steps form a plastic zone, say). Above the threshold the system repartitions, if its cost
  *  model sees an imbalance too (above Zoltan2's tolerance, 1.05): an imbalance the model does not see, a new
- *  partition by that model cannot remove (a rank slowed by another process on its core, say). A threshold below 1
- *  repartitions at every check. A few reductions of one number per check. */
+ *  partition by that model cannot remove; or when the model forecasts one for the next window (a plastic zone
+ *  forming), and then checks early until a check finds none. With rankSpeeds the model knows each rank's measured
+ *  speed (a rank slowed on a shared core, say). A threshold below 1 repartitions at every check. A few reductions
+ *  of a few numbers per check; docs/parallel.md 2. */
 class LoadBalancer
 {
   public:
@@ -77,7 +79,7 @@ class LoadBalancer
         if (!on_ || mpi::rank(comm) != 0 || c_.balanceCsv.empty())
             return;
         std::vector<std::string> kept = {
-            "step,t,imbalance,model_imbalance,repartitioned,cells_moved,seconds,work_cost,speed_spread"};
+            "step,t,imbalance,model_imbalance,repartitioned,cells_moved,seconds,work_cost,speed_spread,forecast"};
         std::ifstream old(fromStep > 0 ? c_.balanceCsv : std::string());
         for (std::string line; std::getline(old, line);)
             if (line.rfind("step,", 0) != 0 && std::strtol(line.c_str(), nullptr, 10) <= fromStep)
@@ -102,8 +104,9 @@ class LoadBalancer
     void check(TimeSystem& system, long step, double t, LoopResult& r)
     {
         const long since = step - fromStep_; // early checks: the start-up partition's cost (class comment)
-        const bool early =
-            c_.earlyBalanceInterval > 0 && since < c_.balanceInterval && since % c_.earlyBalanceInterval == 0;
+        // early checks: through the first interval, and after a repartition until a check finds no need of one
+        const bool early = c_.earlyBalanceInterval > 0 && (since < c_.balanceInterval || following_) &&
+                           since % c_.earlyBalanceInterval == 0;
         if (!on_ || (step % c_.balanceInterval != 0 && !early))
             return;
         const std::vector<double> busy = refit(system);
@@ -116,27 +119,33 @@ class LoadBalancer
         const double imbalance = sum > 0.0 ? largest * size_ / sum : 1.0;
         busy_ = 0.0;
         const double model = system.modelImbalance();
+        const double forecast = system.forecastImbalance();
         const auto weights = system.costWeights();
         r.balanceChecks.push_back({step, t, imbalance, model, weights.size() > 1 ? weights[1] : 0.0, spread_});
         if (!r.repartitions.empty() && r.repartitions.back().after < 0.0)
             r.repartitions.back().after = imbalance;
         RepartitionEvent e{step, t, imbalance};
         const bool forced = c_.imbalanceThreshold < 1.0;
-        const bool move = c_.repartition && repartitionable_ && imbalance > c_.imbalanceThreshold &&
-                          (forced || model > modelTolerance);
+        // the measured window, confirmed by the model (class comment), or the model's forecast of the next one
+        const bool move = c_.repartition && repartitionable_ &&
+                          ((imbalance > c_.imbalanceThreshold && (forced || model > modelTolerance)) ||
+                           forecast > c_.imbalanceThreshold);
         if (move)
         {
             const auto t0 = Clock::now();
             e.cellsMoved = system.repartition();
             e.seconds = mpi::allMax(comm_, std::chrono::duration<double>(Clock::now() - t0).count());
             repartitionable_ = e.cellsMoved >= 0;
+            following_ = repartitionable_ && !forced; // forced: the checks stay where the scene puts them
             if (repartitionable_)
                 r.repartitions.push_back(e);
         }
+        else
+            following_ = false;
         if (csv_)
             *csv_ << step << ',' << std::setprecision(12) << t << ',' << imbalance << ',' << model << ','
                   << (move ? 1 : 0) << ',' << e.cellsMoved << ',' << e.seconds << ',' << r.balanceChecks.back().workCost
-                  << ',' << spread_ << '\n';
+                  << ',' << spread_ << ',' << forecast << '\n';
     }
 
   private:
@@ -162,27 +171,44 @@ class LoadBalancer
             fit_->add(busy, terms);
             system.setCostWeights(fit_->weights());
         }
-        spread_ = k > 0 ? speedSpread(busy, terms, system.costWeights()) : 0.0;
+        const std::vector<double> speed = k > 0 ? speeds(busy, terms, system.costWeights()) : std::vector<double>();
+        spread_ = speed.empty() ? 0.0 : *std::max_element(speed.begin(), speed.end()) /
+                                             *std::min_element(speed.begin(), speed.end());
+        if (c_.rankSpeeds && !speed.empty())
+            system.setRankSpeed(relativeSpeed(speed));
         return busy;
     }
 
-    /*! max / min over the ranks of the busy time per unit of modelled cost: 1 where the model explains the ranks'
-     *  times; above, the ranks ran at different speeds (a shared core), which no partition by the model evens. */
-    static double speedSpread(const std::vector<double>& busy, const std::vector<std::vector<double>>& terms,
-                              const std::vector<double>& weights)
+    /*! Each rank's busy time per unit of modelled cost, inverted: its speed. Equal where the model explains the
+     *  ranks' times; apart where ranks ran at different speeds (a shared core) or the model misses a cost that sits
+     *  on some ranks. Empty where a rank has no modelled cost or no busy time. */
+    static std::vector<double> speeds(const std::vector<double>& busy, const std::vector<std::vector<double>>& terms,
+                                      const std::vector<double>& weights)
     {
-        double fastest = 1e300, slowest = 0.0;
+        std::vector<double> speed(busy.size());
         for (std::size_t p = 0; p < busy.size(); ++p)
         {
             double cost = 0.0;
             for (std::size_t i = 0; i < weights.size() && i < terms[p].size(); ++i)
                 cost += weights[i] * terms[p][i];
-            if (!(cost > 0.0))
-                return 0.0;
-            fastest = std::min(fastest, busy[p] / cost);
-            slowest = std::max(slowest, busy[p] / cost);
+            if (!(cost > 0.0) || !(busy[p] > 0.0))
+                return {};
+            speed[p] = cost / busy[p];
         }
-        return fastest > 0.0 ? slowest / fastest : 0.0;
+        return speed;
+    }
+
+    /*! This rank's speed relative to the ranks' mean, averaged with the earlier checks' (halving their weight at
+     *  each check: one window's speed is noisy, a shared core's lasts minutes) and kept within [1/2, 2]. */
+    double relativeSpeed(const std::vector<double>& speed)
+    {
+        double mean = 0.0;
+        for (double v : speed)
+            mean += v / double(speed.size());
+        relative_.resize(speed.size(), 1.0);
+        for (std::size_t p = 0; p < speed.size(); ++p)
+            relative_[p] = std::clamp(0.5 * (relative_[p] + speed[p] / mean), 0.5, 2.0);
+        return relative_[std::size_t(mpi::rank(comm_))];
     }
 
     const TimeControl& c_;
@@ -191,11 +217,13 @@ class LoadBalancer
     long fromStep_; //!< the step the run (or restart) starts from: the early checks count from there
     bool on_; //!< one rank has no imbalance: checked only when a repartition is forced (threshold < 1)
     bool repartitionable_ = true;
+    bool following_ = false; //!< the last check repartitioned: the cost moves, check early until it stops
     static constexpr double modelTolerance = 1.05; //!< the partitioner's (Repartition.cpp)
     double busy_ = 0.0, waited_ = 0.0, start_ = 0.0;
     std::unique_ptr<std::ofstream> csv_;
     std::unique_ptr<CostFit> fit_; //!< the cost model's weights, fitted to the checks (when it has several)
-    double spread_ = 0.0;          //!< the last check's speedSpread
+    double spread_ = 0.0;          //!< the last check's speed spread: max / min of speeds()
+    std::vector<double> relative_; //!< the ranks' relative speeds (relativeSpeed)
 };
 
 //! The progress line: on a terminal one updating line, otherwise a line every 5 seconds (rank 0).

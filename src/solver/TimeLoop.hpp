@@ -44,6 +44,12 @@ class TimeSystem
     /*! The imbalance the system's cost model sees in the current partition (max / mean of the ranks' summed cell
      *  costs; 1 if it has none). Collective. */
     virtual double modelImbalance() { return 1.0; }
+    /*! The imbalance the model forecasts for the next window on the current partition (a plastic zone that forms
+     *  moves cost within a window); modelImbalance() where the model has no forecast. Collective. */
+    virtual double forecastImbalance() { return modelImbalance(); }
+    /*! This rank's speed (modelled cost per busy second) relative to the ranks' mean, as measured at the checks:
+     *  the model predicts its busy time as its cost over that speed, and a repartition gives it cost in proportion. */
+    virtual void setRankSpeed(double /*relative*/) {}
     /*! The cost model's weights: what one unit of each cost term costs in units of the first (1); empty if the
      *  system has no model to fit (CostFit). */
     virtual std::vector<double> costWeights() const { return {}; }
@@ -68,6 +74,8 @@ struct TimeControl
     long earlyBalanceInterval = 0;    //!< steps between checks in the first balanceInterval of a run (0: none)
     double imbalanceThreshold = 1.15; //!< repartition when a check's imbalance exceeds it (and the model's too)
     bool repartition = false;         //!< repartition (TimeSystem::repartition) or only measure
+    //! give the system each rank's measured speed (TimeSystem::setRankSpeed): a slower rank gets less modelled cost
+    bool rankSpeeds = false;
     std::string balanceCsv;           //!< per check: step, t, imbalance, repartitioned (rank 0; "" for none)
 };
 

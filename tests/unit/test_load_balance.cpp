@@ -27,6 +27,7 @@ class Sleeper : public unilag::TimeSystem
     bool attemptStep(double, double, int, int& iterations) override
     {
         iterations = 0;
+        ++steps_;
         const double t0 = unilag::mpi::cpuSeconds();
         volatile double sink = 0.0;
         while (unilag::mpi::cpuSeconds() - t0 < 1e-3 * work_)
@@ -47,6 +48,16 @@ class Sleeper : public unilag::TimeSystem
         const double largest = unilag::mpi::allMax(MPI_COMM_WORLD, work_);
         return blind ? 1.0 : largest * unilag::mpi::size(MPI_COMM_WORLD) / sum[0];
     }
+    double forecastImbalance() override { return forecast > 0.0 ? forecast : modelImbalance(); }
+    //! Modelled: every rank's cost is its steps (weight 1), whatever its work: the ranks' speeds differ.
+    std::vector<double> costWeights() const override { return modelled ? std::vector<double>{1.0} : std::vector<double>{}; }
+    std::vector<double> costTerms() override
+    {
+        const double steps = double(steps_ - stepsAtLastCall_);
+        stepsAtLastCall_ = steps_;
+        return modelled ? std::vector<double>{steps} : std::vector<double>{};
+    }
+    void setRankSpeed(double relative) override { speeds.push_back(relative); }
     long repartition() override
     {
         double sum[1] = {work_};
@@ -57,9 +68,13 @@ class Sleeper : public unilag::TimeSystem
     }
     int calls = 0;
     bool blind = false; //!< a cost model that does not see the imbalance
+    double forecast = 0.0; //!< > 0: what forecastImbalance says, whatever the works
+    bool modelled = false; //!< cost terms: the steps
+    std::vector<double> speeds; //!< what setRankSpeed was given, in order
 
   private:
     double work_;
+    long steps_ = 0, stepsAtLastCall_ = 0;
 };
 
 unilag::TimeControl control(bool repartition)
@@ -159,4 +174,63 @@ TEST(LoadBalance, ThresholdBelowOneRepartitionsAtEveryCheck)
     EXPECT_EQ(r.repartitions.size(), 3u);
 }
 
+TEST(LoadBalance, AForecastImbalanceRepartitionsABalancedWindow)
+{
+    if (ranks() < 2)
+        GTEST_SKIP() << "needs two ranks";
+    Sleeper s(4.0);
+    s.forecast = 1.3; // a plastic zone forming: the next window will not be balanced, though this one was
+    const auto r = unilag::runTimeLoop(s, control(true), MPI_COMM_WORLD);
+    ASSERT_EQ(r.balanceChecks.size(), 3u);
+    EXPECT_LT(r.balanceChecks[0].imbalance, 1.15);
+    EXPECT_EQ(s.calls, 3);
+    Sleeper quiet(4.0);
+    unilag::runTimeLoop(quiet, control(true), MPI_COMM_WORLD);
+    EXPECT_EQ(quiet.calls, 0);
+}
+
+TEST(LoadBalance, ChecksComeEarlyWhileRepartitionsFollowTheCost)
+{
+    if (ranks() < 2)
+        GTEST_SKIP() << "needs two ranks";
+    Sleeper s(4.0);
+    s.forecast = 1.3; // every check repartitions: the checks stay at the early interval all the run
+    unilag::TimeControl c = control(true);
+    c.earlyBalanceInterval = 3;
+    const auto r = unilag::runTimeLoop(s, c, MPI_COMM_WORLD);
+    std::vector<long> steps;
+    for (const auto& check : r.balanceChecks)
+        steps.push_back(check.step);
+    EXPECT_EQ(steps, (std::vector<long>{3, 6, 9, 10, 12, 15, 18, 20, 21, 24, 27, 30}));
+    EXPECT_EQ(s.calls, 12);
+}
+
+TEST(LoadBalance, RankSpeedsReachTheSystemWhenAsked)
+{
+    if (ranks() < 2)
+        GTEST_SKIP() << "needs two ranks";
+    for (const bool asked : {false, true})
+    {
+        Sleeper s(rank() == 0 ? 6.0 : 2.0); // the same modelled cost, rank 0 three times slower per unit
+        s.modelled = true;
+        s.blind = true;
+        unilag::TimeControl c = control(false);
+        c.rankSpeeds = asked;
+        unilag::runTimeLoop(s, c, MPI_COMM_WORLD);
+        if (!asked)
+        {
+            EXPECT_TRUE(s.speeds.empty());
+            continue;
+        }
+        ASSERT_EQ(s.speeds.size(), 3u);
+        // relative speeds 1 / 3 of the others' on rank 0, averaged with the start (1) and halved in weight per check
+        const double slow = 3.0 / (1.0 + 3.0 * (ranks() - 1)) * ranks() / 3.0;
+        const double mine = rank() == 0 ? slow : 3.0 * slow;
+        const double expected = 0.125 + 0.875 * mine;
+        EXPECT_NEAR(s.speeds.back(), expected, 0.1 * expected);
+        EXPECT_EQ(s.speeds.front() < 1.0, rank() == 0);
+    }
+}
+
 } // namespace
+
