@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <cmath>
 #include <cstdio>
 #include <cstdlib>
 #include <fstream>
@@ -65,7 +66,7 @@ class StopOnSignal
  *  shows as the first steps form a plastic zone, say). Above the threshold the system repartitions, if its cost
  *  model sees an imbalance too (above Zoltan2's tolerance, 1.05): an imbalance the model does not see, a new
  *  partition by that model cannot remove; or when the model forecasts one for the next window (a plastic zone
- *  forming), and then checks early until a check finds none. With rankSpeeds the model knows each rank's measured
+ *  forming). Checks come early after a repartition and while the forecast differs from the last window. With rankSpeeds the model knows each rank's measured
  *  speed (a rank slowed on a shared core, say). A threshold below 1 repartitions at every check. A few reductions
  *  of a few numbers per check; docs/parallel.md 2. */
 class LoadBalancer
@@ -140,8 +141,8 @@ class LoadBalancer
             if (repartitionable_)
                 r.repartitions.push_back(e);
         }
-        else
-            following_ = false;
+        else // the cost is still moving where the forecast and the last window differ
+            following_ = std::abs(forecast - model) > movingCost;
         if (csv_)
             *csv_ << step << ',' << std::setprecision(12) << t << ',' << imbalance << ',' << model << ','
                   << (move ? 1 : 0) << ',' << e.cellsMoved << ',' << e.seconds << ',' << r.balanceChecks.back().workCost
@@ -217,8 +218,9 @@ class LoadBalancer
     long fromStep_; //!< the step the run (or restart) starts from: the early checks count from there
     bool on_; //!< one rank has no imbalance: checked only when a repartition is forced (threshold < 1)
     bool repartitionable_ = true;
-    bool following_ = false; //!< the last check repartitioned: the cost moves, check early until it stops
+    bool following_ = false; //!< the cost moves (the last check repartitioned or forecast a change): check early
     static constexpr double modelTolerance = 1.05; //!< the partitioner's (Repartition.cpp)
+    static constexpr double movingCost = 0.02;     //!< |forecast - model| above which the checks come early
     double busy_ = 0.0, waited_ = 0.0, start_ = 0.0;
     std::unique_ptr<std::ofstream> csv_;
     std::unique_ptr<CostFit> fit_; //!< the cost model's weights, fitted to the checks (when it has several)

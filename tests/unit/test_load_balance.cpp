@@ -205,6 +205,22 @@ TEST(LoadBalance, ChecksComeEarlyWhileRepartitionsFollowTheCost)
     EXPECT_EQ(s.calls, 12);
 }
 
+TEST(LoadBalance, ChecksComeEarlyWhileTheForecastDiffersFromTheLastWindow)
+{
+    if (ranks() < 2)
+        GTEST_SKIP() << "needs two ranks";
+    Sleeper s(4.0);
+    s.forecast = 1.08; // below the threshold, but the cost is moving: no repartition, early checks
+    unilag::TimeControl c = control(true);
+    c.earlyBalanceInterval = 3;
+    const auto r = unilag::runTimeLoop(s, c, MPI_COMM_WORLD);
+    EXPECT_EQ(r.balanceChecks.size(), 12u);
+    EXPECT_EQ(s.calls, 0);
+    Sleeper still(4.0);
+    const auto q = unilag::runTimeLoop(still, c, MPI_COMM_WORLD);
+    EXPECT_EQ(q.balanceChecks.size(), 6u); // 3, 6, 9, then every 10
+}
+
 TEST(LoadBalance, RankSpeedsReachTheSystemWhenAsked)
 {
     if (ranks() < 2)
