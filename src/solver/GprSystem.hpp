@@ -123,13 +123,14 @@ template <int D, class P> class GprSystem : public TimeSystem
     }
 
     /*! New owners by the scene's partitioner (balancedOwners: Zoltan2 on the cells' current centroids, or the
-     *  curve), weighted by predictedTimes(); the mesh rebuilt on them, the fields migrated (with the lagged node
-     *  velocities and the cells' last plastic work rates), the operator's node lists and the writer's topology renewed, geometry and EOS recomputed: the
-     *  next step is bitwise what it would have been. Collective. */
+     *  curve), weighted by the forecast predictedTimes(); the mesh rebuilt on them, the fields migrated (with the
+     *  lagged node velocities and the cells' last plastic work rates), the operator's node lists and the writer's
+     *  topology renewed, geometry and EOS recomputed: the next step is bitwise what it would have been. Collective. */
     long repartition() override
     {
         const auto& old = *md_.mesh;
-        const std::vector<int> owner = balancedOwners(old, md_.fields["x"], predictedTimes(true), md_.scene.partitioner);
+        const std::vector<int> owner =
+            balancedOwners(old, md_.fields["x"], predictedTimes(true), md_.scene.partitioner);
         double moved[1] = {0.0};
         for (LO i = 0; i < old.nOwnedCells; ++i)
             moved[0] += owner[i] != md_.rank ? 1.0 : 0.0;

@@ -66,9 +66,9 @@ class StopOnSignal
  *  shows as the first steps form a plastic zone, say). Above the threshold the system repartitions, if its cost
  *  model sees an imbalance too (above Zoltan2's tolerance, 1.05): an imbalance the model does not see, a new
  *  partition by that model cannot remove; or when the model forecasts one for the next window (a plastic zone
- *  forming). Checks come early after a repartition and while the forecast differs from the last window. With rankSpeeds the model knows each rank's measured
- *  speed (a rank slowed on a shared core, say). A threshold below 1 repartitions at every check. A few reductions
- *  of a few numbers per check; docs/parallel.md 2. */
+ *  forming). Checks come early after a repartition and while the forecast differs from the last window. With
+ *  rankSpeeds the model knows each rank's measured speed (a rank slowed on a shared core, say). A threshold below 1
+ *  repartitions at every check. A few reductions of a few numbers per check; docs/parallel.md 2. */
 class LoadBalancer
 {
   public:

@@ -50,7 +50,10 @@ class Sleeper : public unilag::TimeSystem
     }
     double forecastImbalance() override { return forecast > 0.0 ? forecast : modelImbalance(); }
     //! Modelled: every rank's cost is its steps (weight 1), whatever its work: the ranks' speeds differ.
-    std::vector<double> costWeights() const override { return modelled ? std::vector<double>{1.0} : std::vector<double>{}; }
+    std::vector<double> costWeights() const override
+    {
+        return modelled ? std::vector<double>{1.0} : std::vector<double>{};
+    }
     std::vector<double> costTerms() override
     {
         const double steps = double(steps_ - stepsAtLastCall_);
