@@ -11,6 +11,7 @@
 #include <Tpetra_Core.hpp>
 
 #include "config/Scene.hpp"
+#include "core/ThreadCount.hpp"
 #include "solver/Run.hpp"
 #include "tube/TubeRun.hpp"
 #include "tube/TubeScene.hpp"
@@ -36,7 +37,8 @@ options:
                      exit 3 with the failing figure otherwise
   --restart FILE     continuum: continue the run from a checkpoint (output.checkpoint_interval writes
                      <DIR>/checkpoint.h5) on any number of ranks; the output series goes on in DIR
-  --threads N        Kokkos threads per rank (default: OMP_NUM_THREADS)
+  --threads N        OpenMP threads per rank (default: OMP_NUM_THREADS if set, else the CPUs this rank may run
+                     on, divided among the node's ranks that may run on them)
   --quiet            no progress line
 
 output: <DIR>/unilag.xmf (open in ParaView), unilag_NNNNNN.h5, scene.yaml (resolved scene), summary.json,
@@ -162,8 +164,11 @@ int main(int argc, char** argv)
         MPI_Finalize();
         return unilag::ExitInput;
     }
+    const unilag::ThreadCount threads = unilag::threadsPerRank(args.threads, MPI_COMM_WORLD);
+    if (!threads.warning.empty())
+        std::fprintf(stderr, "unilag: warning: %s\n", threads.warning.c_str());
     Kokkos::InitArguments kargs;
-    kargs.num_threads = args.threads;
+    kargs.num_threads = threads.threads;
     kargs.disable_warnings = true;
     Kokkos::initialize(kargs);
     int code = 0;

@@ -1,0 +1,93 @@
+// Threads per rank (core/ThreadCount.hpp): the default never lets a node's OpenMP threads outnumber its CPUs, which
+// ran the impact scene 70x slower (4 ranks of 2 threads on 2 cores); --threads and OMP_NUM_THREADS still decide.
+#include <gtest/gtest.h>
+
+#include <sched.h>
+
+#include <cstdlib>
+#include <string>
+
+#include "core/ThreadCount.hpp"
+
+namespace
+{
+
+//! Sets or unsets OMP_NUM_THREADS for one scope, and puts it back.
+class OmpNumThreads
+{
+  public:
+    explicit OmpNumThreads(const char* value)
+    {
+        if (const char* old = std::getenv("OMP_NUM_THREADS"))
+            old_ = old, had_ = true;
+        if (value)
+            setenv("OMP_NUM_THREADS", value, 1);
+        else
+            unsetenv("OMP_NUM_THREADS");
+    }
+    ~OmpNumThreads()
+    {
+        if (had_)
+            setenv("OMP_NUM_THREADS", old_.c_str(), 1);
+        else
+            unsetenv("OMP_NUM_THREADS");
+    }
+
+  private:
+    std::string old_;
+    bool had_ = false;
+};
+
+int nodeSum(int v, MPI_Comm* nodeOut = nullptr)
+{
+    MPI_Comm node;
+    MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node);
+    int sum = 0;
+    MPI_Allreduce(&v, &sum, 1, MPI_INT, MPI_SUM, node);
+    if (nodeOut)
+        *nodeOut = node;
+    else
+        MPI_Comm_free(&node);
+    return sum;
+}
+
+int cpusOfNode()
+{
+    cpu_set_t mine;
+    CPU_ZERO(&mine);
+    sched_getaffinity(0, sizeof(mine), &mine);
+    MPI_Comm node;
+    nodeSum(0, &node);
+    cpu_set_t all;
+    MPI_Allreduce(&mine, &all, int(sizeof(cpu_set_t)), MPI_BYTE, MPI_BOR, node);
+    MPI_Comm_free(&node);
+    return CPU_COUNT(&all);
+}
+
+} // namespace
+
+TEST(ThreadCount, TheDefaultDividesTheNodesCpusAmongItsRanks)
+{
+    OmpNumThreads unset(nullptr);
+    const unilag::ThreadCount count = unilag::threadsPerRank(-1, MPI_COMM_WORLD);
+    EXPECT_GE(count.threads, 1);
+    const int ranks = nodeSum(1);
+    EXPECT_LE(nodeSum(count.threads), std::max(cpusOfNode(), ranks));
+    EXPECT_TRUE(count.warning.empty()) << count.warning;
+}
+
+TEST(ThreadCount, TheUserDecidesAndIsWarnedOfOversubscription)
+{
+    const int many = 4 * cpusOfNode();
+    {
+        OmpNumThreads env("3");
+        EXPECT_EQ(unilag::threadsPerRank(-1, MPI_COMM_WORLD).threads, 3);
+        EXPECT_EQ(unilag::threadsPerRank(2, MPI_COMM_WORLD).threads, 2); // --threads before the environment
+    }
+    OmpNumThreads unset(nullptr);
+    const unilag::ThreadCount count = unilag::threadsPerRank(many, MPI_COMM_WORLD);
+    EXPECT_EQ(count.threads, many);
+    int rank = 0;
+    MPI_Comm_rank(MPI_COMM_WORLD, &rank);
+    EXPECT_EQ(count.warning.empty(), rank != 0) << "only world rank 0 warns";
+}
