@@ -72,10 +72,11 @@ ThreadCount threadsPerRank(int requested, MPI_Comm world)
     int worldRank = 0;
     MPI_Comm_rank(world, &worldRank);
     if (worldRank == 0 && mostThreads > 1 && nodeThreads > nodeCores)
-        count.warning = std::to_string(nodeRanks) + " rank(s) run " + std::to_string(nodeThreads) +
-                        " threads on " + std::to_string(nodeCores) +
-                        " CPU(s) of this node; threads that outnumber the CPUs spin at OpenMP barriers and run many "
-                        "times slower (leave --threads and OMP_NUM_THREADS unset: the CPUs are then divided among the ranks)";
+        count.warning = std::to_string(nodeRanks) + " rank(s) of this node run " + std::to_string(nodeThreads) +
+                        " threads on the " + std::to_string(nodeCores) +
+                        " CPU(s) they may run on; threads that outnumber the CPUs spin at OpenMP barriers and run "
+                        "many times slower (leave --threads and OMP_NUM_THREADS unset to share the CPUs, or give "
+                        "each rank T CPUs: mpirun --map-by slot:PE=T)";
     MPI_Comm_free(&node);
     return count;
 }
