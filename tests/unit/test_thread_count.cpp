@@ -1,5 +1,5 @@
 // Threads per rank (core/ThreadCount.hpp): the default never lets a node's OpenMP threads outnumber its CPUs, which
-// ran the impact scene 70x slower (4 ranks of 2 threads on 2 cores); --threads and OMP_NUM_THREADS still decide.
+// ran the impact scene 50x slower (4 ranks of 2 threads on 2 cores); --threads and OMP_NUM_THREADS still decide.
 #include <gtest/gtest.h>
 
 #include <sched.h>
