@@ -38,27 +38,30 @@ class OmpNumThreads
     bool had_ = false;
 };
 
-int nodeSum(int v, MPI_Comm* nodeOut = nullptr)
+//! The ranks of this node, as ThreadCount sees them; free it after use.
+MPI_Comm nodeComm()
 {
     MPI_Comm node;
     MPI_Comm_split_type(MPI_COMM_WORLD, MPI_COMM_TYPE_SHARED, 0, MPI_INFO_NULL, &node);
+    return node;
+}
+
+int nodeSum(int v)
+{
+    MPI_Comm node = nodeComm();
     int sum = 0;
     MPI_Allreduce(&v, &sum, 1, MPI_INT, MPI_SUM, node);
-    if (nodeOut)
-        *nodeOut = node;
-    else
-        MPI_Comm_free(&node);
+    MPI_Comm_free(&node);
     return sum;
 }
 
+//! The CPUs any rank of this node may run on (the union of their affinity masks).
 int cpusOfNode()
 {
-    cpu_set_t mine;
+    cpu_set_t mine, all;
     CPU_ZERO(&mine);
     sched_getaffinity(0, sizeof(mine), &mine);
-    MPI_Comm node;
-    nodeSum(0, &node);
-    cpu_set_t all;
+    MPI_Comm node = nodeComm();
     MPI_Allreduce(&mine, &all, int(sizeof(cpu_set_t)), MPI_BYTE, MPI_BOR, node);
     MPI_Comm_free(&node);
     return CPU_COUNT(&all);
