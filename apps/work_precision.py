@@ -10,6 +10,8 @@ MEASURE is a dotted path into summary.json:
   l1_density_error                  L1(density) against the exact profile (Sedov)
   l2_error.velocity                 the vortex's L2 errors (also l2_error.specific_volume, l2_error.energy)
   boundary_mean_radius.inner=0.05   a boundary's mean radius: with =EXACT, the error is |value - EXACT| / EXACT
+  script:apps/plate_period.py=28.89e-6   a script run on each run's output folder (the scene's own output kept):
+                                    the number on its last line, here the Be plate's period against 28.89 us
 
 usage: work_precision.py UNILAG SCENE MEASURE WORKDIR SIZE[,SIZE...] [--set KEY=VALUE ...]
 examples (one core):
@@ -17,6 +19,9 @@ examples (one core):
       /tmp/wp 0.4,0.3,0.2,0.15
   OMP_NUM_THREADS=1 apps/work_precision.py build/release/apps/unilag inputs/be_shell2d.yaml \\
       boundary_mean_radius.inner=0.05 /tmp/wp 0.0014,0.001,0.0007
+  OMP_NUM_THREADS=1 apps/work_precision.py build/release/apps/unilag inputs/be_plate2d.yaml \\
+      script:apps/plate_period.py=28.89e-6 /tmp/wp 0.001,0.0007,0.0005 --set mesh.geometry=geometry/plate_half2d.geo \\
+      --set boundaries.left.type=symmetry
 """
 import csv
 import json
@@ -26,11 +31,17 @@ import sys
 
 
 def parse_measure(text):
+    """(keys into summary.json, or ["script:", PATH]; the exact value or None)."""
     path, _, exact = text.partition("=")
-    return path.split("."), (float(exact) if exact else None)
+    keys = ["script:", path[len("script:"):]] if path.startswith("script:") else path.split(".")
+    return keys, (float(exact) if exact else None)
 
 
-def measure(summary, path, exact):
+def measure(summary, path, exact, out):
+    if path[0] == "script:": # the number on the last line the script prints for the output folder
+        lines = subprocess.run([sys.executable, path[1], out], check=True, capture_output=True, text=True).stdout
+        value = float(lines.strip().splitlines()[-1])
+        return abs(value - exact) / abs(exact) if exact is not None else value
     value = summary
     for key in path:
         if key not in value:
@@ -40,9 +51,10 @@ def measure(summary, path, exact):
     return abs(value - exact) / abs(exact) if exact is not None else value
 
 
-def run(unilag, scene, out, order, size, extra):
+def run(unilag, scene, out, order, size, extra, keep_output):
+    output = [] if keep_output else ["--set", "output.enabled=false"]
     subprocess.run([unilag, "run", scene, "--quiet", "--set", f"scheme.order={order}", "--set", f"mesh.size={size}",
-                    "--set", "output.enabled=false", "--output", out] + extra, check=True, stdout=subprocess.DEVNULL)
+                    "--output", out] + output + extra, check=True, stdout=subprocess.DEVNULL)
     with open(os.path.join(out, "summary.json")) as f:
         return json.load(f)
 
@@ -79,10 +91,11 @@ def main():
     print(f"{'order':>5} {'size':>8} {'cells':>7} {'steps':>7} {'wall s':>8} {'cell-steps/s':>13} {'error':>10}")
     for order in (1, 2):
         for size in sizes.split(","):
-            s = run(unilag, scene, os.path.join(work, f"o{order}_h{size}"), order, size, extra)
+            out = os.path.join(work, f"o{order}_h{size}")
+            s = run(unilag, scene, out, order, size, extra, path[0] == "script:")
             row = {"order": order, "size": float(size), "cells": s["cells"], "steps": s["steps"],
                    "wall_seconds": s["wall_seconds"], "cell_steps_per_second": s["cell_steps_per_second"],
-                   "error": measure(s, path, exact)}
+                   "error": measure(s, path, exact, out)}
             rows.append(row)
             print(f"{order:>5} {size:>8} {row['cells']:>7} {row['steps']:>7} {row['wall_seconds']:>8.2f} "
                   f"{row['cell_steps_per_second']:>13.3g} {row['error']:>10.4g}", flush=True)
@@ -90,7 +103,7 @@ def main():
         w = csv.DictWriter(f, fieldnames=list(rows[0].keys()))
         w.writeheader()
         w.writerows(rows)
-    label = measure_text if exact is None else f"relative error of {'.'.join(path)}"
+    label = measure_text if exact is None else f"relative error of {measure_text.partition('=')[0]}"
     plot(rows, label, os.path.join(work, "work_precision.png"))
     print(f"wrote {work}/work_precision.csv and .png")
 
