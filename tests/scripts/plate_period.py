@@ -22,7 +22,7 @@ value, crossings, extrema = period(out, radius)
 ok = value == value
 if ok:
     err = abs(value - expected) / expected
-    print(f"period {value * 1e6:.3f} us, expected {expected * 1e6:.3f} us: error {err:.2%} (tolerance {tol:.0%})")
+    print(f"period {value * 1e6:.3f} us, expected {expected * 1e6:.3f} us: error {err:.2%} (tolerance {tol:.1%})")
     ok = err <= tol
     if bounds is not None:
         ratio = extrema[-1] / extrema[0]
