@@ -45,7 +45,8 @@ template <int D, class P> struct RateLayout
     static constexpr int ncomp = P::heat ? 2 * D + 2 : D + 1;
 };
 
-/*! \brief The rates of cell i from its subcell forces f_ri = T_i(x_r) c_ri + M_ri (v_r - v_i(x_r)) (2.2): the flux
+/*! \brief The rates of cell i from its subcell forces f_ri = -L_ri + M_ri (v_r - v_i(x_r)) (2.2; L_ri = (p I - sigma) c_ri
+ *  at first order, cornerLoad at second): the flux
  *  state's pressure, stress and velocity at the nodes (reconstructed at second order), its corner vectors, and the
  *  node velocities of the nodal solve for it. */
 template <int D, class P> struct SubcellForces
@@ -67,22 +68,19 @@ template <int D, class P> struct SubcellForces
         cornerValues<D, P>(state, aux, stress, rec, i, r, vk, pk, sk);
         for (int d = 0; d < D; ++d)
             vr[d] = vnode(r, d);
-        const Vec<D> ck = cornerVec<D>(corner, i, k);
-        const Vec<D> pressure = (-pk) * ck;
         const double z = aux(i, Aux::impedance);
         const Mat<D> Mik = subcellMatrix<D>(corner, i, k);
         const Vec<D> viscous = z * (Mik * (vr - vk));
-        Vec<D> f = pressure + viscous;
-        double elastic = 0.0;
-        if constexpr (P::strain)
-        {
-            const Vec<D> fs = stressTimes<D>(sk, ck);
-            f = f + fs;
-            elastic = norm(fs);
-        }
+        const Vec<D> traction = (-1.0) * cornerLoad<D, P>(mesh, corner, rec, i, k, pk, sk);
         if (scale) // the terms before they cancel: z M v_r and z M v_i, not their small difference
-            *scale += norm(pressure) + z * (norm(Mik * vr) + norm(Mik * vk)) + elastic;
-        return f;
+        {
+            const Vec<D> ck = cornerVec<D>(corner, i, k);
+            double elastic = 0.0;
+            if constexpr (P::strain)
+                elastic = norm(stressTimes<D>(sk, ck));
+            *scale += norm((-pk) * ck) + z * (norm(Mik * vr) + norm(Mik * vk)) + elastic;
+        }
+        return traction + viscous;
     }
 
     KOKKOS_INLINE_FUNCTION void operator()(const LO i, Vec<D>& force, double& power) const

@@ -258,6 +258,48 @@ KOKKOS_INLINE_FUNCTION void cornerValues(const ConstField& state, const ConstFie
     }
 }
 
+/*! \brief The load of cell i's traction on its corner k, L_k = integral over the cell's faces at node k of phi_k (p I -
+ *  sigma) n ds (phi_k the node's hat function, n the outward normal; docs/gpr-model.md 2.5). For the cell's linear
+ *  reconstruction q(x) = q_i + grad q . (x - x_i) on a straight simplex this is
+ *      L_k = q_i c_k + |T_i| grad q / (D + 1),   q = p I - sigma (grad: grad p - div sigma),
+ *  the cell value on the corner vector plus an equal share of the cell's net force. Why not the corner value q_k c_k:
+ *  both give the same net force, but sum_k q_k c_k . v_k integrates the flux q v of linear fields with an error of
+ *  O(h^3) per cell whose sign follows the cell's shape (mesh-scale entropy noise at second order), and sum_k L_k . v_k
+ *  is exact. Only with scheme.corner_load: consistent (rec.consistentLoad): behind strong shocks on triangles it
+ *  scatters the entropy more than the lumped load (docs/gpr-model.md 2.5), which stays the default. pk, sk: the corner
+ *  values at k (cornerValues); the lumped load, and cell values (first order, or a pressure and stress at cell
+ *  values), give (pk I - sk) c_k bit for bit. */
+template <int D, class P>
+KOKKOS_INLINE_FUNCTION Vec<D> cornerLoad(const MeshView<D>& mesh, const Field& corner, const Reconstruction<D>& rec,
+                                         LO i, int k, double pk, const gpr::Sym3& sk)
+{
+    using R = ReconLayout<D, P>;
+    const Vec<D> ck = cornerVec<D>(corner, i, k);
+    Vec<D> load = pk * ck;
+    if constexpr (P::strain)
+        load = load - stressTimes<D>(sk, ck);
+    if (!rec.active() || !rec.consistentLoad)
+        return load;
+    const Vec<D> dk = rec.offset(i, mesh.cellNodes(i, k));
+    const double share = rec.volume(i) / double(D + 1);
+    Vec<D> net; // grad p - div sigma
+    for (int a = 0; a < D; ++a)
+        net[a] = rec.grad(i, R::pressure * D + a);
+    load = load - rec.delta(i, R::pressure, dk) * ck;
+    if constexpr (P::strain)
+    {
+        constexpr int comp[3][3] = {{0, 3, 4}, {3, 1, 5}, {4, 5, 2}}; // Sym3 xx yy zz xy xz yz of (row, column)
+        gpr::Sym3 dsk{rec.delta(i, R::stress + 0, dk), rec.delta(i, R::stress + 1, dk),
+                      rec.delta(i, R::stress + 2, dk), rec.delta(i, R::stress + 3, dk),
+                      rec.delta(i, R::stress + 4, dk), rec.delta(i, R::stress + 5, dk)};
+        load = load + stressTimes<D>(dsk, ck);
+        for (int a = 0; a < D; ++a)
+            for (int b = 0; b < D; ++b)
+                net[a] -= rec.grad(i, (R::stress + comp[a][b]) * D + b);
+    }
+    return load + share * net;
+}
+
 /*! \brief Nodal solver at owned nodes: node velocity v_r and the net force sum_i f_ri it exerts on the fluid
  *  (non-zero only where a boundary condition acts; used for the momentum and energy balance).
  *  T_i = -p_i I + sigma_i with sigma from `stress` (strain variants; the Picard iterate). */
@@ -294,16 +336,14 @@ void nodalSolve(const MeshView<D>& mesh, const BoundaryView& bc, const ConstFiel
             Vec<D> vi;
             cornerValues<D, P>(state, aux, stress, rec, i, r, vi, p, sigma);
             Mat<D> Mik = subcellMatrix<D>(corner, i, k);
-            const Vec<D> ck = cornerVec<D>(corner, i, k);
             const Vec<D> Mv = Mik * vi;
+            const Vec<D> load = cornerLoad<D, P>(mesh, corner, rec, i, k, p, sigma);
             for (int a = 0; a < D; ++a)
             {
-                b[a] += z * Mv[a] + p * ck[a];
+                b[a] += z * Mv[a] + load[a];
                 for (int e = 0; e < D; ++e)
                     M.a[a][e] += z * Mik.a[a][e];
             }
-            if constexpr (P::strain)
-                b = b - stressTimes<D>(sigma, ck);
             const double rho = 1.0 / state(i, StateLayout<D, P>::omega);
             for (int a = 0; a < D; ++a)
             {

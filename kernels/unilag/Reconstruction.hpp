@@ -58,6 +58,8 @@ struct Reconstruction
     ConstField grad;     //!< cells x ReconLayout::ncomp
     ConstField x;        //!< node positions
     ConstField centroid; //!< cell centroids (CellGeometry::centroid)
+    View<const double*> volume; //!< cell volumes (CellGeometry::volume; the mechanical forces' cornerLoad)
+    bool consistentLoad = false; //!< scheme.corner_load: consistent (cornerLoad, Hydro.hpp), else lumped
 
     KOKKOS_INLINE_FUNCTION bool active() const { return grad.extent(0) > 0; }
 
@@ -178,6 +180,16 @@ enum class Reconstructed
 {
     All,
     Velocity
+};
+
+/*! How the forces load a cell's corners with its reconstructed traction (scene key scheme.corner_load; cornerLoad,
+ *  Hydro.hpp): the corner values on the corner vectors (Lumped), or the traction's integral against the node's hat
+ *  function (Consistent: exact work for linear fields, no mesh-scale entropy noise on smooth flows; but a larger
+ *  entropy scatter behind strong shocks on triangles, docs/gpr-model.md 2.5). */
+enum class CornerLoad
+{
+    Lumped,
+    Consistent
 };
 
 //! How limitedGradientsOf bounds one quantity: what a Limiter means for it (the Q's bounds()).

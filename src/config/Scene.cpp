@@ -322,6 +322,8 @@ void readScheme(ConfigNode& root, Scene& s)
         s.pressureLimiter = sch.option<Limiter>("pressure_limiter", "", limiters);
     s.reconstruct = sch.option<Reconstructed>("reconstruct", "all",
                                               {{"all", Reconstructed::All}, {"velocity", Reconstructed::Velocity}});
+    s.cornerLoad = sch.option<CornerLoad>("corner_load", "lumped",
+                                          {{"lumped", CornerLoad::Lumped}, {"consistent", CornerLoad::Consistent}});
     s.integrator = sch.option<Integrator>("integrator", "midpoint",
                                           {{"midpoint", Integrator::Midpoint}, {"ars222", Integrator::Ars222}});
     if (s.pressureLimiter && s.reconstruct == Reconstructed::Velocity)

@@ -152,6 +152,7 @@ struct Scene
     Limiter limiter = Limiter::BarthJespersen; //!< order 2 only
     std::optional<Limiter> pressureLimiter; //!< order 2: the pressure's and shear stress's own (else limiter)
     Reconstructed reconstruct = Reconstructed::All; //!< order 2 only: every quantity, or the velocity alone
+    CornerLoad cornerLoad = CornerLoad::Lumped;     //!< order 2 only: how the traction loads the corners
     Integrator integrator = Integrator::Midpoint; //!< order 2 only (ars222 is rejected at order 1)
 
     std::string outputDirectory = "output";

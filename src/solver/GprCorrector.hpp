@@ -49,7 +49,8 @@ template <int D, class P> void GprOperator<D, P>::stageState(double tStage)
             dropFlaggedGradients(md.write("gradients"), md.read("first_order"), md.m.nOwnedCells);
     }
     halo("gradients");
-    rec_ = Reconstruction<D>{md.read("gradients"), xm, md.geomMid.centroid};
+    rec_ = Reconstruction<D>{md.read("gradients"), xm, md.geomMid.centroid, md.geomMid.volume,
+                              md.consistentLoad};
     if constexpr (P::heat)
     {
         // second order in space: theta, eps, J reconstructed at the faces (as the predictor's, heatFluxes)

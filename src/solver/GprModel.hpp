@@ -69,6 +69,7 @@ template <int D, class P> struct GprModel
     bool order2;
     Limiter limiter;
     Reconstructed reconstruct;
+    bool consistentLoad; //!< scene.cornerLoad == Consistent
     std::optional<Limiter> pressureLimiter; //!< scene.pressureLimiter: the traction's own limiter, if given
 
     Field fnode, aux;           //!< subcell force sums at owned nodes; EOS, speeds, temperature, stress at t^n
@@ -114,7 +115,7 @@ template <int D, class P>
 GprModel<D, P>::GprModel(const Scene& scene_, std::shared_ptr<DistributedMesh> mesh_)
     : scene(scene_), mesh(std::move(mesh_)), comm(mpi::rawComm(mesh->comm)), m(mesh->view<D>()), fields(mesh),
       order2(scene.order == 2), limiter(scene.limiter), reconstruct(scene.reconstruct),
-      pressureLimiter(scene.pressureLimiter)
+      consistentLoad(scene.cornerLoad == CornerLoad::Consistent), pressureLimiter(scene.pressureLimiter)
 {
     rank = mpi::rank(comm);
     size = mpi::size(comm);

@@ -103,7 +103,8 @@ template <int D, class P> class GprOperator
                 dropFlaggedGradients(md_.write("gradients_n"), md_.read("first_order"), md_.m.nOwnedCells);
         }
         halo("gradients_n");
-        recStart_ = Reconstruction<D>{md_.read("gradients_n"), md_.read("x"), md_.geom.centroid};
+        recStart_ = Reconstruction<D>{md_.read("gradients_n"), md_.read("x"), md_.geom.centroid,
+                                       md_.geom.volume, md_.consistentLoad};
     }
 
     /*! Explicit heat fluxes of the state at t^n (2.3): independent of dt. Order 2: from theta, eps, J reconstructed
@@ -250,7 +251,7 @@ template <int D, class P> class GprOperator
                                   md_.limiter);
         }
         halo(name);
-        return Reconstruction<D>{md_.read(name), x, geom.centroid};
+        return Reconstruction<D>{md_.read(name), x, geom.centroid, geom.volume, false};
     }
 
     PicardCheck strainStep(double dt, bool midpoint);

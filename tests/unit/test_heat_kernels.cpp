@@ -113,7 +113,7 @@ template <int D> struct Heat
         Field grad("heatGradients", nCells, unilag::heat::Quantities<D, PH>::ncomp);
         unilag::limitedGradientsOf<D>(mesh, unilag::heat::Quantities<D, PH>{state, aux, bc}, geom, x, grad, bc,
                                       unilag::Limiter::BarthJespersen);
-        rec = unilag::Reconstruction<D>{grad, x, geom.centroid};
+        rec = unilag::Reconstruction<D>{grad, x, geom.centroid, geom.volume, false};
     }
 
     //! Run the kernel; the rates on the host.
