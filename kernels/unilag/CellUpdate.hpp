@@ -68,19 +68,24 @@ template <int D, class P> struct SubcellForces
         cornerValues<D, P>(state, aux, stress, rec, i, r, vk, pk, sk);
         for (int d = 0; d < D; ++d)
             vr[d] = vnode(r, d);
+        const Vec<D> ck = cornerVec<D>(corner, i, k);
+        const Vec<D> pressure = (-pk) * ck;
         const double z = aux(i, Aux::impedance);
         const Mat<D> Mik = subcellMatrix<D>(corner, i, k);
         const Vec<D> viscous = z * (Mik * (vr - vk));
-        const Vec<D> traction = (-1.0) * cornerLoad<D, P>(mesh, corner, rec, i, k, pk, sk);
-        if (scale) // the terms before they cancel: z M v_r and z M v_i, not their small difference
+        Vec<D> f = pressure + viscous;
+        double elastic = 0.0;
+        if constexpr (P::strain)
         {
-            const Vec<D> ck = cornerVec<D>(corner, i, k);
-            double elastic = 0.0;
-            if constexpr (P::strain)
-                elastic = norm(stressTimes<D>(sk, ck));
-            *scale += norm((-pk) * ck) + z * (norm(Mik * vr) + norm(Mik * vk)) + elastic;
+            const Vec<D> fs = stressTimes<D>(sk, ck);
+            f = f + fs;
+            elastic = norm(fs);
         }
-        return traction + viscous;
+        if (consistentLoad<D, P>(rec)) // scheme.corner_load: consistent (cornerLoad, Hydro.hpp)
+            f = f - consistentLoadCorrection<D, P>(mesh, corner, rec, i, k);
+        if (scale) // the terms before they cancel: z M v_r and z M v_i, not their small difference
+            *scale += norm(pressure) + z * (norm(Mik * vr) + norm(Mik * vk)) + elastic;
+        return f;
     }
 
     KOKKOS_INLINE_FUNCTION void operator()(const LO i, Vec<D>& force, double& power) const

@@ -270,22 +270,26 @@ KOKKOS_INLINE_FUNCTION void cornerValues(const ConstField& state, const ConstFie
  *  values at k (cornerValues); the lumped load, and cell values (first order, or a pressure and stress at cell
  *  values), give (pk I - sk) c_k bit for bit. */
 template <int D, class P>
-KOKKOS_INLINE_FUNCTION Vec<D> cornerLoad(const MeshView<D>& mesh, const Field& corner, const Reconstruction<D>& rec,
-                                         LO i, int k, double pk, const gpr::Sym3& sk)
+KOKKOS_INLINE_FUNCTION bool consistentLoad(const Reconstruction<D>& rec)
+{
+    return rec.active() && rec.consistentLoad;
+}
+
+/*! L_k minus the lumped load (pk I - sk) c_k (cornerLoad): what the consistent load adds, -(delta T_k) c_k +
+ *  |T_i| div T_i / (D + 1) with delta T_k the reconstruction's offset at node k. The kernels add it to their lumped
+ *  terms, which thus stay bit for bit those of scheme.corner_load: lumped. */
+template <int D, class P>
+KOKKOS_INLINE_FUNCTION Vec<D> consistentLoadCorrection(const MeshView<D>& mesh, const Field& corner,
+                                                       const Reconstruction<D>& rec, LO i, int k)
 {
     using R = ReconLayout<D, P>;
     const Vec<D> ck = cornerVec<D>(corner, i, k);
-    Vec<D> load = pk * ck;
-    if constexpr (P::strain)
-        load = load - stressTimes<D>(sk, ck);
-    if (!rec.active() || !rec.consistentLoad)
-        return load;
     const Vec<D> dk = rec.offset(i, mesh.cellNodes(i, k));
     const double share = rec.volume(i) / double(D + 1);
     Vec<D> net; // grad p - div sigma
     for (int a = 0; a < D; ++a)
         net[a] = rec.grad(i, R::pressure * D + a);
-    load = load - rec.delta(i, R::pressure, dk) * ck;
+    Vec<D> load = (-rec.delta(i, R::pressure, dk)) * ck;
     if constexpr (P::strain)
     {
         constexpr int comp[3][3] = {{0, 3, 4}, {3, 1, 5}, {4, 5, 2}}; // Sym3 xx yy zz xy xz yz of (row, column)
@@ -298,6 +302,20 @@ KOKKOS_INLINE_FUNCTION Vec<D> cornerLoad(const MeshView<D>& mesh, const Field& c
                 net[a] -= rec.grad(i, (R::stress + comp[a][b]) * D + b);
     }
     return load + share * net;
+}
+
+//! The load of corner k (the comment above): lumped, plus the correction with scheme.corner_load: consistent.
+template <int D, class P>
+KOKKOS_INLINE_FUNCTION Vec<D> cornerLoad(const MeshView<D>& mesh, const Field& corner, const Reconstruction<D>& rec,
+                                         LO i, int k, double pk, const gpr::Sym3& sk)
+{
+    const Vec<D> ck = cornerVec<D>(corner, i, k);
+    Vec<D> load = pk * ck;
+    if constexpr (P::strain)
+        load = load - stressTimes<D>(sk, ck);
+    if (consistentLoad<D, P>(rec))
+        load = load + consistentLoadCorrection<D, P>(mesh, corner, rec, i, k);
+    return load;
 }
 
 /*! \brief Nodal solver at owned nodes: node velocity v_r and the net force sum_i f_ri it exerts on the fluid
@@ -336,14 +354,18 @@ void nodalSolve(const MeshView<D>& mesh, const BoundaryView& bc, const ConstFiel
             Vec<D> vi;
             cornerValues<D, P>(state, aux, stress, rec, i, r, vi, p, sigma);
             Mat<D> Mik = subcellMatrix<D>(corner, i, k);
+            const Vec<D> ck = cornerVec<D>(corner, i, k);
             const Vec<D> Mv = Mik * vi;
-            const Vec<D> load = cornerLoad<D, P>(mesh, corner, rec, i, k, p, sigma);
             for (int a = 0; a < D; ++a)
             {
-                b[a] += z * Mv[a] + load[a];
+                b[a] += z * Mv[a] + p * ck[a];
                 for (int e = 0; e < D; ++e)
                     M.a[a][e] += z * Mik.a[a][e];
             }
+            if constexpr (P::strain)
+                b = b - stressTimes<D>(sigma, ck);
+            if (consistentLoad<D, P>(rec))
+                b = b + consistentLoadCorrection<D, P>(mesh, corner, rec, i, k);
             const double rho = 1.0 / state(i, StateLayout<D, P>::omega);
             for (int a = 0; a < D; ++a)
             {
