@@ -45,9 +45,9 @@ template <int D, class P> struct RateLayout
     static constexpr int ncomp = P::heat ? 2 * D + 2 : D + 1;
 };
 
-/*! \brief The rates of cell i from its subcell forces f_ri = -L_ri + M_ri (v_r - v_i(x_r)) (2.2; L_ri = (p I - sigma) c_ri
- *  at first order, cornerLoad at second): the flux
- *  state's pressure, stress and velocity at the nodes (reconstructed at second order), its corner vectors, and the
+/*! \brief The rates of cell i from its subcell forces f_ri = T_i(x_r) c_ri + M_ri (v_r - v_i(x_r)) (2.2; with
+ *  scheme.corner_load: consistent the traction term is -cornerLoad, CornerLoad.hpp): the flux state's pressure,
+ *  stress and velocity at the nodes (reconstructed at second order), its corner vectors, and the
  *  node velocities of the nodal solve for it. */
 template <int D, class P> struct SubcellForces
 {
@@ -81,7 +81,7 @@ template <int D, class P> struct SubcellForces
             f = f + fs;
             elastic = norm(fs);
         }
-        if (consistentLoad<D, P>(rec)) // scheme.corner_load: consistent (cornerLoad, Hydro.hpp)
+        if (consistentLoad<D, P>(rec)) // scheme.corner_load: consistent (CornerLoad.hpp)
             f = f - consistentLoadCorrection<D, P>(mesh, corner, rec, i, k);
         if (scale) // the terms before they cancel: z M v_r and z M v_i, not their small difference
             *scale += norm(pressure) + z * (norm(Mik * vr) + norm(Mik * vk)) + elastic;

@@ -59,7 +59,7 @@ struct Reconstruction
     ConstField x;        //!< node positions
     ConstField centroid; //!< cell centroids (CellGeometry::centroid)
     View<const double*> volume; //!< cell volumes (CellGeometry::volume; the mechanical forces' cornerLoad)
-    bool consistentLoad = false; //!< scheme.corner_load: consistent (cornerLoad, Hydro.hpp), else lumped
+    bool consistentLoad = false; //!< scheme.corner_load: consistent (cornerLoad, CornerLoad.hpp), else lumped
 
     KOKKOS_INLINE_FUNCTION bool active() const { return grad.extent(0) > 0; }
 
@@ -183,7 +183,7 @@ enum class Reconstructed
 };
 
 /*! How the forces load a cell's corners with its reconstructed traction (scene key scheme.corner_load; cornerLoad,
- *  Hydro.hpp): the corner values on the corner vectors (Lumped), or the traction's integral against the node's hat
+ *  CornerLoad.hpp): the corner values on the corner vectors (Lumped), or the traction's integral against the node's hat
  *  function (Consistent: exact work for linear fields, no mesh-scale entropy noise on smooth flows; but a larger
  *  entropy scatter behind strong shocks on triangles, docs/gpr-model.md 2.5). */
 enum class CornerLoad
