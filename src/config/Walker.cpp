@@ -37,11 +37,33 @@ bool parseNumber(const std::string& s, double& out)
     return !s.empty() && end && *end == '\0';
 }
 
+//! An entry as the scene wrote it, on one line (error messages are one line): a value, a list or a section.
 std::string entryText(const Teuchos::ParameterEntry& e)
 {
+    if (e.isList())
+        return "a section of keys";
+    if (e.isType<bool>())
+        return e.getValue<bool>(nullptr) ? "'true'" : "'false'";
     std::ostringstream os;
-    os << "'" << e.getAny(false) << "'";
-    return os.str();
+    if (e.isType<Teuchos::Array<double>>()) // as written, not at Teuchos' 17 digits
+    {
+        const auto& a = e.getValue<Teuchos::Array<double>>(nullptr);
+        os << "{";
+        for (decltype(a.size()) k = 0; k < a.size(); ++k)
+            os << (k ? ", " : "") << a[k];
+        os << "}";
+    }
+    else
+        os << e.getAny(false);
+    std::string text = os.str();
+    for (char& c : text)
+        if (c == '\n' || c == '\r')
+            c = ' ';
+    while (!text.empty() && text.back() == ' ')
+        text.pop_back();
+    if (e.isArray() && text.size() >= 2) // Teuchos prints arrays as {1, 2}; the scene wrote [1, 2]
+        return "a list [" + text.substr(1, text.size() - 2) + "]";
+    return "'" + text + "'";
 }
 
 const Teuchos::ParameterList& emptyList()
@@ -208,7 +230,7 @@ double ConfigNode::number(const std::string& key, double def, bool required)
     double v;
     if (e.isType<std::string>() && parseNumber(e.getValue<std::string>(nullptr), v))
         return v;
-    fail(key, "expected a number, found '" + e.getAny(false).typeName() + "' " + entryText(e));
+    fail(key, "expected a number, found " + entryText(e));
 }
 
 double ConfigNode::positive(const std::string& key, double def, bool required)

@@ -34,8 +34,16 @@ add_test(NAME error_unknown_eos COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/
 add_test(NAME error_unknown_law COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err_law
          "error_unknown_law.yaml: key 'materials.gas.strain_relaxation.law': 'plastik' is not one of: .*did you mean 'plastic'"
          -- ${UNILAG} run ${SCENES}/error_unknown_law.yaml)
+# A section or a list where a number belongs: named as the scene wrote it, on one line (Teuchos printed a section over
+# several lines with its own type name, "found 'ParameterList' 'value = 1.4   [unused]", and a list at 17 digits).
+add_test(NAME error_section_value COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err_section
+         "error_section_value.yaml: key 'materials.gas.gamma': expected a number, found a section of keys$"
+         -- ${UNILAG} run ${SCENES}/error_section_value.yaml)
+add_test(NAME error_list_value COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err_list
+         "error_gamma.yaml: key 'materials.gas.gamma': expected a number, found a list \\[1.4, 2\\]$"
+         -- ${UNILAG} run ${SCENES}/error_gamma.yaml --set "materials.gas.gamma=[1.4, 2]")
 set_tests_properties(error_gamma error_negative_csh error_negative_tau error_unknown_eos error_unknown_law
-                     PROPERTIES LABELS regression)
+                     error_section_value error_list_value PROPERTIES LABELS regression)
 # A run that goes unstable stops with a diagnosis (exit 4) and never writes NaNs. A rejected update names the cell by
 # its global id and centroid at t, the time, the halvings, and the cell's values (volume ratio and volumes, density,
 # specific internal energy with the total and kinetic energies and the total before the step, squared sound speed:
