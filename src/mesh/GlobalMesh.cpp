@@ -11,6 +11,7 @@
 
 #include "config/Scene.hpp"
 #include "mesh/FaceKey.hpp"
+#include "mesh/MshCheck.hpp"
 
 namespace unilag
 {
@@ -269,6 +270,8 @@ void renumber(GlobalMesh& m)
 GlobalMesh loadMesh(const Scene& scene)
 {
     const std::string source = scene.geometry.empty() ? scene.meshFile : scene.geometry;
+    if (scene.geometry.empty())
+        checkMshFile(source); // before gmsh, which crashes on some malformed files
     GlobalMesh m;
     gmsh::initialize(0, nullptr, false);
     try
