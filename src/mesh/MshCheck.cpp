@@ -257,13 +257,13 @@ void checkMshFile(const std::string& path)
     {
         if (line.empty())
             continue;
+        if (version.empty() && line != "$MeshFormat")
+            return; // not gmsh's .msh (gmsh reads other formats too), or its format 1 ($NOD): unchecked
         if (line[0] != '$')
             in.fail("expected a section ($Name), found '" + line.substr(0, 60) + "'");
         const std::string section = line.substr(1);
         if (version.empty())
         {
-            if (section != "MeshFormat")
-                return; // gmsh's format 1 ($NOD): unchecked
             const Tokens t = in.record(3, "the format line 'version file-type data-size'");
             if (t[1] != "0" || (t[0] != "2.2" && t[0] != "4.1"))
                 return; // binary, or another version: unchecked

@@ -102,6 +102,7 @@ TEST(MshCheck, GmshFilesPass)
     EXPECT_EQ(check(kMsh22), "ok");
     EXPECT_EQ(check(kMsh41), "ok");
     EXPECT_EQ(check(replaced(kMsh22, "2.2 0 8", "2.2 1 8")), "ok"); // binary: gmsh's own business
+    EXPECT_EQ(check("solid stl\nendsolid stl\n"), "ok");               // another format gmsh reads
 }
 
 TEST(MshCheck, Format22Defects)
