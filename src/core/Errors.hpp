@@ -26,6 +26,17 @@ class OutputError : public std::runtime_error
     using std::runtime_error::runtime_error;
 };
 
+/*! Text read from a file, fit for a one-line message: bytes outside printable ASCII become '?' and more than max
+ *  characters are cut (a corrupt file's strings would print raw bytes). */
+inline std::string printable(const std::string& text, std::size_t max = 80)
+{
+    std::string s = text.substr(0, max);
+    for (char& c : s)
+        if (c < 0x20 || c > 0x7e)
+            c = '?';
+    return text.size() > max ? s + "..." : s;
+}
+
 //! Exit codes of the CLI.
 enum ExitCode : int
 {

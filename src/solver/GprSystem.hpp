@@ -292,7 +292,7 @@ template <int D, class P> class GprSystem : public TimeSystem
         for (const auto& [key, value] : checkpointIdentity(md_))
             if (in.text(key) != value)
                 throw InputError("--restart '" + path + "': a checkpoint of another run (" + key + " '" +
-                                 in.text(key) + "', this scene '" + value + "')");
+                                 printable(in.text(key)) + "', this scene '" + value + "')");
         if (!md_.fields.has(lagged())) // ars_v1 is made by the first step's stage 1
             md_.fields.add(lagged(), Entity::Node, D, Lifetime::Scratch);
         for (const auto& [name, node] : checkpointFields(md_, lagged()))

@@ -33,9 +33,14 @@ restart_test(vortex_ars222_np3_np2 interval:0.5:28 3 2 ${INPUTS}/vortex2d.yaml -
 add_test(NAME restart_source COMMAND ${UNILAG} run ${SMALL_SEDOV} --set output.checkpoint_interval=0.1
          --output ${WORK}/restart_source)
 add_test(NAME restart_truncate COMMAND bash -c "head -c 3000 '${WORK}/restart_source/checkpoint.h5' > '${WORK}/truncated.h5'")
+# A corrupt identity string (the physics 'hydro' with two bytes overwritten, one not ASCII): named with '?' for
+# each byte outside printable ASCII, not printed raw (before: the raw bytes, invalid UTF-8, on the terminal).
+add_test(NAME restart_corrupt_text COMMAND ${PYTHON} -c "d = open('${WORK}/restart_source/checkpoint.h5', 'rb').read()
+assert d.count(b'hydro') == 1
+open('${WORK}/corrupt_text.h5', 'wb').write(d.replace(b'hydro', b'\\xfa\\x01dro'))")
 set_tests_properties(restart_source PROPERTIES FIXTURES_SETUP restart_source LABELS regression)
-set_tests_properties(restart_truncate PROPERTIES FIXTURES_REQUIRED restart_source FIXTURES_SETUP restart_truncated
-                     LABELS regression)
+set_tests_properties(restart_truncate restart_corrupt_text PROPERTIES FIXTURES_REQUIRED restart_source
+                     FIXTURES_SETUP restart_truncated LABELS regression)
 set(CK ${WORK}/restart_source/checkpoint.h5)
 function(restart_error name file pattern)
     add_test(NAME error_restart_${name} COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err_restart_${name}
@@ -48,6 +53,8 @@ restart_error(truncated ${WORK}/truncated.h5 "not a readable checkpoint \\(missi
               ${SMALL_SEDOV})
 restart_error(other_scene ${CK} "a checkpoint of another run \\(title 'sedov2d', this scene 'vortex2d'\\)"
               ${INPUTS}/vortex2d.yaml --quiet)
+restart_error(corrupt_text ${WORK}/corrupt_text.h5 "a checkpoint of another run \\(physics '\\?\\?dro', this scene 'hydro'\\)$"
+              ${SMALL_SEDOV})
 restart_error(other_mesh ${CK} "a checkpoint of another run \\(cells '1018', this scene '4048'\\)" ${SMALL_SEDOV}
               --set mesh.size=0.0288)
 restart_error(other_order ${CK} "a checkpoint of another run \\(order '1', this scene '2'\\)" ${SMALL_SEDOV}
