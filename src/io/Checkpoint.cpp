@@ -3,6 +3,7 @@
 #include <hdf5.h>
 
 #include <algorithm>
+#include <cstdint>
 #include <cstdio>
 #include <type_traits>
 
@@ -14,7 +15,25 @@ namespace unilag::io
 namespace
 {
 
-const char* const formatTag = "unilag checkpoint 1";
+// 2: each text, list and table carries its FNV-1a checksum (group "checksums"), so that a corrupt value is refused
+const char* const formatTag = "unilag checkpoint 2";
+
+//! FNV-1a (64 bits) continued over n bytes: a checksum of the values as written, whatever the number of ranks.
+std::uint64_t fnv1a(std::uint64_t hash, const void* data, std::size_t n)
+{
+    const auto* bytes = static_cast<const unsigned char*>(data);
+    for (std::size_t k = 0; k < n; ++k)
+        hash = (hash ^ bytes[k]) * 0x100000001b3ull;
+    return hash;
+}
+constexpr std::uint64_t fnvStart = 0xcbf29ce484222325ull;
+
+std::string hex(std::uint64_t v)
+{
+    char buffer[17];
+    std::snprintf(buffer, sizeof buffer, "%016llx", (unsigned long long)v);
+    return buffer;
+}
 
 void bcastString(MPI_Comm comm, std::string& s)
 {
@@ -149,8 +168,9 @@ std::string createFile(const std::string& path, const std::map<std::string, std:
 /*! Rank 0: the table `name` (blocks, nc columns) into group, from this rank's block and each other rank's in turn
  *  (received even after a failure, so that no rank waits forever); "" or the reason. */
 std::string writeTable(MPI_Comm comm, hid_t group, const std::string& name, const RowBlocks& blocks, int nc,
-                       std::vector<double> block, bool ok)
+                       std::vector<double> block, bool ok, std::uint64_t& checksum)
 {
+    checksum = fnvStart;
     const hsize_t dims[2] = {hsize_t(blocks.n), hsize_t(nc)};
     H5Id space{ok ? H5Screate_simple(2, dims, nullptr) : -1, H5Sclose};
     H5Id set{ok && space.id >= 0
@@ -163,6 +183,7 @@ std::string writeTable(MPI_Comm comm, hid_t group, const std::string& name, cons
         block.resize(std::size_t(blocks.count(r)) * nc);
         if (r > 0)
             recvDoubles(comm, block.data(), block.size(), r);
+        checksum = fnv1a(checksum, block.data(), block.size() * sizeof(double));
         written = written &&
                   rowsIo(set.id, hsize_t(blocks.first(r)), hsize_t(blocks.count(r)), hsize_t(nc), block.data(), true);
     }
@@ -218,6 +239,39 @@ void* resizeText(void* v, std::size_t n)
     return s.data();
 }
 
+//! The checksums of the texts and lists, by "text.NAME" and "list.NAME".
+std::map<std::string, std::string> checksums(const std::map<std::string, std::string>& texts,
+                                             const std::map<std::string, std::vector<double>>& vectors)
+{
+    std::map<std::string, std::string> sums;
+    for (const auto& [name, v] : texts)
+        sums["text." + name] = hex(fnv1a(fnvStart, v.data(), v.size()));
+    for (const auto& [name, v] : vectors)
+        sums["list." + name] = hex(fnv1a(fnvStart, v.data(), v.size() * sizeof(double)));
+    return sums;
+}
+
+//! Rank 0: the group "checksums", one text each; "" or the reason.
+std::string writeChecksums(hid_t file, const std::map<std::string, std::string>& sums, const std::string& path)
+{
+    H5Id group{H5Gcreate2(file, "checksums", H5P_DEFAULT, H5P_DEFAULT, H5P_DEFAULT), H5Gclose};
+    try
+    {
+        if (group.id < 0)
+            throw OutputError("cannot create its checksums");
+        for (const auto& [name, v] : sums)
+        {
+            const hsize_t n = v.size();
+            writeDataset(group.id, name, H5T_NATIVE_CHAR, 1, &n, v.data());
+        }
+    }
+    catch (const OutputError& e)
+    {
+        return path + ": " + e.what();
+    }
+    return {};
+}
+
 } // namespace
 
 void CheckpointWriter::commit()
@@ -235,6 +289,7 @@ void CheckpointWriter::commit()
             texts_["format"] = formatTag;
             error = createFile(tmp, texts_, vectors_, file, tables);
         }
+        std::map<std::string, std::string> sums = checksums(texts_, vectors_);
         for (const auto& [name, block] : blocks_)
         {
             const RowBlocks blocks{shapes_[name].first, size};
@@ -242,11 +297,15 @@ void CheckpointWriter::commit()
                 sendDoubles(comm_, block.data(), block.size(), 0);
             else
             {
+                std::uint64_t sum;
                 const std::string e =
-                    writeTable(comm_, tables.id, name, blocks, shapes_[name].second, block, error.empty());
+                    writeTable(comm_, tables.id, name, blocks, shapes_[name].second, block, error.empty(), sum);
                 error = error.empty() ? e : error;
+                sums["table." + name] = hex(sum);
             }
         }
+        if (rank == 0 && error.empty())
+            error = writeChecksums(file.id, sums, tmp);
         if (rank == 0 && error.empty() && H5Fflush(file.id, H5F_SCOPE_GLOBAL) < 0)
             error = "cannot flush " + tmp;
     }
@@ -267,11 +326,18 @@ namespace
 
 const char* const unreadable = "not a readable checkpoint (missing, truncated or corrupt HDF5)";
 
+//! A value whose checksum does not match: "text.NAME", "list.NAME" or "table.NAME".
+std::string corrupt(const std::string& what)
+{
+    const auto dot = what.find('.');
+    return "corrupt: " + what.substr(0, dot) + " '" + what.substr(dot + 1) + "' does not match its checksum";
+}
+
 /*! Rank 0: opens the checkpoint, reads its texts and lists, and the shapes {rows, columns} of its tables; "" or the
  *  reason. */
 std::string openFile(const std::string& path, H5Id& file, H5Id& tables, std::map<std::string, std::string>& texts,
                      std::map<std::string, std::vector<double>>& vectors,
-                     std::map<std::string, std::vector<double>>& shapes)
+                     std::map<std::string, std::vector<double>>& shapes, std::map<std::string, std::string>& sums)
 {
     H5Eset_auto2(H5E_DEFAULT, nullptr, nullptr);
     file.id = H5Fopen(path.c_str(), H5F_ACC_RDONLY, H5P_DEFAULT);
@@ -296,15 +362,25 @@ std::string openFile(const std::string& path, H5Id& file, H5Id& tables, std::map
     if (!ok)
         return unreadable;
     if (texts["format"] != formatTag)
-        return "not a unilag checkpoint (format '" + texts["format"] + "', expected '" + formatTag + "')";
+        return "not a unilag checkpoint of this version (format '" + printable(texts["format"]) + "', expected '" +
+               formatTag + "')";
+    H5Id gs{H5Gopen2(file.id, "checksums", H5P_DEFAULT), H5Gclose};
+    for (const std::string& name : gs.id >= 0 ? members(gs.id) : std::vector<std::string>())
+        ok = ok && readDataset(gs.id, name, H5T_NATIVE_CHAR, dims, resizeText, &sums[name]);
+    if (gs.id < 0 || !ok)
+        return unreadable;
+    for (const auto& [name, sum] : checksums(texts, vectors))
+        if (sums[name] != sum)
+            return corrupt(name);
     return {};
 }
 
 /*! Rank 0: reads the table `name` block by block, keeps its own block and sends each other rank its own (zeros
  *  after a failure, so that no rank waits forever); "" or the reason. */
 std::string readTable(MPI_Comm comm, hid_t group, const std::string& name, const RowBlocks& blocks, int nc,
-                      std::vector<double>& own, bool ok)
+                      std::vector<double>& own, bool ok, const std::string& sum)
 {
+    std::uint64_t checksum = fnvStart;
     H5Id set{ok ? H5Dopen2(group, name.c_str(), H5P_DEFAULT) : -1, H5Dclose};
     bool read = set.id >= 0;
     std::vector<double> buffer;
@@ -316,9 +392,12 @@ std::string readTable(MPI_Comm comm, hid_t group, const std::string& name, const
                rowsIo(set.id, hsize_t(blocks.first(r)), hsize_t(blocks.count(r)), hsize_t(nc), block.data(), false);
         if (!read)
             std::fill(block.begin(), block.end(), 0.0);
+        checksum = fnv1a(checksum, block.data(), block.size() * sizeof(double));
         if (r > 0)
             sendDoubles(comm, block.data(), block.size(), r);
     }
+    if (ok && read && hex(checksum) != sum)
+        return corrupt("table." + name);
     return !ok || read ? std::string() : unreadable;
 }
 
@@ -332,8 +411,9 @@ CheckpointReader::CheckpointReader(MPI_Comm comm, const std::string& path) : com
     std::string error;
     H5Id file{-1, H5Fclose}, tables{-1, H5Gclose};
     std::map<std::string, std::vector<double>> shapes;
+    std::map<std::string, std::string> sums;
     if (rank == 0)
-        error = openFile(path, file, tables, texts_, vectors_, shapes);
+        error = openFile(path, file, tables, texts_, vectors_, shapes, sums);
     bcastString(comm, error);
     if (!error.empty())
         throw InputError("--restart '" + path + "': " + error);
@@ -349,7 +429,8 @@ CheckpointReader::CheckpointReader(MPI_Comm comm, const std::string& path) : com
         block.assign(std::size_t(blocks.count(rank)) * nc, 0.0);
         if (rank == 0)
         {
-            const std::string e = readTable(comm, tables.id, name, blocks, nc, block, error.empty());
+            const std::string e =
+                readTable(comm, tables.id, name, blocks, nc, block, error.empty(), sums["table." + name]);
             error = error.empty() ? e : error;
         }
         else

@@ -7,7 +7,8 @@
  *  [r N / P, (r + 1) N / P) of a table of N rows); rank 0 streams the blocks to and from the file one rank at a time
  *  (serial HDF5, hyperslabs), and a reader's rows come from the blocks' owners. The file's layout is that of a
  *  single-rank write. It is written to "<path>.tmp" and renamed, so a crash mid-write never leaves a half checkpoint
- *  under the real name. A file that is missing, truncated, not a checkpoint, or lacks a table or number is an
+ *  under the real name. A file that is missing, truncated, not a checkpoint, lacks a table or number, or whose text,
+ *  list or table does not match its FNV-1a checksum (group "checksums", over the values in global order) is an
  *  InputError naming the file, on every rank alike.
  */
 #pragma once

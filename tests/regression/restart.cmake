@@ -33,13 +33,13 @@ restart_test(vortex_ars222_np3_np2 interval:0.5:28 3 2 ${INPUTS}/vortex2d.yaml -
 add_test(NAME restart_source COMMAND ${UNILAG} run ${SMALL_SEDOV} --set output.checkpoint_interval=0.1
          --output ${WORK}/restart_source)
 add_test(NAME restart_truncate COMMAND bash -c "head -c 3000 '${WORK}/restart_source/checkpoint.h5' > '${WORK}/truncated.h5'")
-# A corrupt identity string (the physics 'hydro' with two bytes overwritten, one not ASCII): named with '?' for
-# each byte outside printable ASCII, not printed raw (before: the raw bytes, invalid UTF-8, on the terminal).
-add_test(NAME restart_corrupt_text COMMAND ${PYTHON} -c "d = open('${WORK}/restart_source/checkpoint.h5', 'rb').read()
-assert d.count(b'hydro') == 1
-open('${WORK}/corrupt_text.h5', 'wb').write(d.replace(b'hydro', b'\\xfa\\x01dro'))")
+# Corrupt checkpoints (restart_corrupt.py writes them from restart_source's): a table value with one byte changed
+# (before the checksums: the run went on with it, or stopped unstable, exit 0 or 4), the identity text 'hydro' with
+# two bytes overwritten, and the format text with one byte outside ASCII (named with '?', not printed raw).
+add_test(NAME restart_corrupt COMMAND ${PYTHON} ${SCRIPTS}/restart_corrupt.py ${WORK}/restart_source/checkpoint.h5
+         ${WORK})
 set_tests_properties(restart_source PROPERTIES FIXTURES_SETUP restart_source LABELS regression)
-set_tests_properties(restart_truncate restart_corrupt_text PROPERTIES FIXTURES_REQUIRED restart_source
+set_tests_properties(restart_truncate restart_corrupt PROPERTIES FIXTURES_REQUIRED restart_source
                      FIXTURES_SETUP restart_truncated LABELS regression)
 set(CK ${WORK}/restart_source/checkpoint.h5)
 function(restart_error name file pattern)
@@ -53,7 +53,12 @@ restart_error(truncated ${WORK}/truncated.h5 "not a readable checkpoint \\(missi
               ${SMALL_SEDOV})
 restart_error(other_scene ${CK} "a checkpoint of another run \\(title 'sedov2d', this scene 'vortex2d'\\)"
               ${INPUTS}/vortex2d.yaml --quiet)
-restart_error(corrupt_text ${WORK}/corrupt_text.h5 "a checkpoint of another run \\(physics '\\?\\?dro', this scene 'hydro'\\)$"
+restart_error(corrupt_table ${WORK}/corrupt_table.h5 "corrupt: table 'cell.state' does not match its checksum$"
+              ${SMALL_SEDOV})
+restart_error(corrupt_text ${WORK}/corrupt_text.h5 "corrupt: text 'physics' does not match its checksum$"
+              ${SMALL_SEDOV})
+restart_error(corrupt_format ${WORK}/corrupt_format.h5
+              "not a unilag checkpoint of this version \\(format '\\?\\?ilag checkpoint 2', expected 'unilag checkpoint 2'\\)$"
               ${SMALL_SEDOV})
 restart_error(other_mesh ${CK} "a checkpoint of another run \\(cells '1018', this scene '4048'\\)" ${SMALL_SEDOV}
               --set mesh.size=0.0288)

@@ -1,0 +1,27 @@
+#!/usr/bin/env python3
+"""restart_corrupt.py CHECKPOINT DIR: writes DIR/corrupt_table.h5 (one byte of the table cell.state's data changed),
+DIR/corrupt_text.h5 (the identity text 'hydro' overwritten by '\\xfa\\x01dro') and DIR/corrupt_format.h5 (the format
+text's first bytes overwritten likewise), each otherwise the checkpoint itself (tests/regression/restart.cmake)."""
+import sys
+
+import h5py
+
+source, work = sys.argv[1], sys.argv[2]
+data = open(source, "rb").read()
+with h5py.File(source, "r") as f:
+    table = f["tables/cell.state"]
+    offset = table.id.get_offset() + 8 * table.shape[1] * (table.shape[0] // 2) + 3  # a middle row, a mantissa byte
+
+
+def write(name, bytes_):
+    assert bytes_ != data
+    with open(f"{work}/{name}", "wb") as f:
+        f.write(bytes_)
+
+
+corrupt = bytearray(data)
+corrupt[offset] ^= 0x10
+write("corrupt_table.h5", bytes(corrupt))
+assert data.count(b"hydro") == 1 and data.count(b"unilag checkpoint 2") == 1
+write("corrupt_text.h5", data.replace(b"hydro", b"\xfa\x01dro"))
+write("corrupt_format.h5", data.replace(b"unilag checkpoint 2", b"\xfa\x01ilag checkpoint 2"))
