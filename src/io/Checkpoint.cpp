@@ -133,6 +133,16 @@ bool rowsIo(hid_t set, hsize_t first, hsize_t n, hsize_t ncomp, double* data, bo
                   : H5Dread(set, H5T_NATIVE_DOUBLE, memory.id, file.id, H5P_DEFAULT, data)) >= 0;
 }
 
+//! Each value of a map as a 1-D dataset of group (texts as chars, lists as doubles); OutputError if it cannot.
+template <class Map> void writeDatasets(hid_t group, const Map& values, hid_t type)
+{
+    for (const auto& [name, v] : values)
+    {
+        const hsize_t n = v.size();
+        writeDataset(group, name, type, 1, &n, v.data());
+    }
+}
+
 //! Rank 0: creates the file with its texts and lists, and the (empty) group of the tables; "" or the reason.
 std::string createFile(const std::string& path, const std::map<std::string, std::string>& texts,
                        const std::map<std::string, std::vector<double>>& vectors, H5Id& file, H5Id& tables)
@@ -147,16 +157,8 @@ std::string createFile(const std::string& path, const std::map<std::string, std:
         return "cannot create the groups of " + path;
     try
     {
-        for (const auto& [name, v] : texts)
-        {
-            const hsize_t n = v.size();
-            writeDataset(gt.id, name, H5T_NATIVE_CHAR, 1, &n, v.data());
-        }
-        for (const auto& [name, v] : vectors)
-        {
-            const hsize_t n = v.size();
-            writeDataset(gv.id, name, H5T_NATIVE_DOUBLE, 1, &n, v.data());
-        }
+        writeDatasets(gt.id, texts, H5T_NATIVE_CHAR);
+        writeDatasets(gv.id, vectors, H5T_NATIVE_DOUBLE);
     }
     catch (const OutputError& e)
     {
@@ -259,11 +261,7 @@ std::string writeChecksums(hid_t file, const std::map<std::string, std::string>&
     {
         if (group.id < 0)
             throw OutputError("cannot create its checksums");
-        for (const auto& [name, v] : sums)
-        {
-            const hsize_t n = v.size();
-            writeDataset(group.id, name, H5T_NATIVE_CHAR, 1, &n, v.data());
-        }
+        writeDatasets(group.id, sums, H5T_NATIVE_CHAR);
     }
     catch (const OutputError& e)
     {
