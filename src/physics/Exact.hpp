@@ -16,6 +16,7 @@ class RadialProfile
     explicit RadialProfile(const std::string& csv); //!< throws InputError if unreadable
     double density(double r) const { return interpolate(density_, r); }
     double ambientDensity() const { return density_.back(); }
+    double lastPosition() const { return r_.back(); } //!< beyond it, the last row's density (constant)
 
   private:
     double interpolate(const std::vector<double>& f, double r) const;

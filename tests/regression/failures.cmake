@@ -117,6 +117,11 @@ add_test(NAME error_exact_order COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/
 add_test(NAME error_exact_columns COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err_exact_columns
          "sedov2d.yaml: key 'exact.table': .*error_exact_columns.csv line 2: the header 'position,pressure' must name the columns 'position' and 'density'"
          -- ${UNILAG} run ${SMALL_SEDOV} --set exact.table=${SCENES}/error_exact_columns.csv)
+# A table that ends before the shock: beyond its last row the profile is that row's, not the ambient state (a table
+# cut at r = 0.297 gave L1 0.995 on Sedov, exit 0). Here the shipped table (to r = 1.2) against a shock at 1.5.
+add_test(NAME error_exact_short COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err_exact_short
+         "sedov2d.yaml: key 'exact.table': .*ends at position 1.200000, not past the shock \\(shock_radius 1.500000\\)"
+         -- ${UNILAG} run ${SMALL_SEDOV} --set exact.shock_radius=1.5)
 
 # Command-line errors: exit 2, one message, nothing written. (expect_error.sh appends --output OUTDIR.)
 add_test(NAME error_cli_unknown_option COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err_cli_option
