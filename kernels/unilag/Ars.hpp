@@ -134,6 +134,7 @@ PicardCheck arsFinalStrain(const MeshView<D>& mesh, const ConstField& state, con
     auto volume = geom.volume;
     auto update = KOKKOS_LAMBDA(const LO i, double(&ext)[2])
     {
+        captureBeforeConstexpr(mass, plasticHint, plasticWork, count);
         const Material& m = materials(cellMaterial(i));
         const gpr::Sym3 G0 = loadSym3(state, i, S::G);
         const double newVolume = cellVolumeAt<D>(mesh, xNew, i);

@@ -39,10 +39,13 @@ template <int D> struct CellFlux
 //! Columns of a stored stage's rates (owned cells): what the forces and the heat fluxes give, times the mass.
 template <int D, class P> struct RateLayout
 {
-    static constexpr int momentum = 0; //!< m dv/dt = sum_r f_ri, D columns (2b)
-    static constexpr int power = D;    //!< m dE/dt = sum_r f_ri . v_r (2c)
-    static constexpr int heat = D + 1; //!< heat: m dE/dt, then m dJ/dt (D columns) of the fluxes (2.3)
-    static constexpr int ncomp = P::heat ? 2 * D + 2 : D + 1;
+    enum : int // enumerators, not static members: device code may bind them to references (View indices)
+    {
+        momentum = 0,                        //!< m dv/dt = sum_r f_ri, D columns (2b)
+        power = D,                           //!< m dE/dt = sum_r f_ri . v_r (2c)
+        heat = D + 1,                        //!< heat: m dE/dt, then m dJ/dt (D columns) of the fluxes (2.3)
+        ncomp = P::heat ? 2 * D + 2 : D + 1,
+    };
 };
 
 /*! \brief The rates of cell i from its subcell forces f_ri = T_i(x_r) c_ri + M_ri (v_r - v_i(x_r)) (2.2; with
@@ -140,6 +143,7 @@ void storeRates(const SubcellForces<D, P>& forces, const ConstField& heatRate, c
     using R = RateLayout<D, P>;
     auto store = KOKKOS_LAMBDA(const LO i)
     {
+        captureBeforeConstexpr(heatRate);
         Vec<D> f;
         double power;
         forces(i, f, power);

@@ -45,6 +45,7 @@ UpdateCheck applyUpdate(const MeshView<D>& mesh, const ConstField& state, const 
     const bool storeNew = geomNew.volume.extent(0) > 0;
     auto update = KOKKOS_LAMBDA(const LO i, double(&ext)[4])
     {
+        captureBeforeConstexpr(stateNew, heat, aux);
         Vec<D> xm[NV], xn[NV];
         for (int k = 0; k < NV; ++k)
         {

@@ -98,9 +98,15 @@ KOKKOS_INLINE_FUNCTION void rusanov(const Side<D>& a, const Side<D>& b, const Ve
 template <int D, class P>
 struct Quantities
 {
-    static constexpr int theta = 0, eps = 1, J = 2;     //!< quantities (J: D of them)
-    static constexpr int nq = 2 + D, ncomp = nq * D;  //!< quantities, columns of the gradient field
-    static constexpr int bdata = theta;
+    enum : int // enumerators, not static members: device code may bind them to references (View indices)
+    {
+        theta = 0,      //!< quantities (J: D of them)
+        eps = 1,
+        J = 2,
+        nq = 2 + D,     //!< quantities
+        ncomp = nq * D, //!< columns of the gradient field
+        bdata = theta
+    };
     static constexpr bool atFaces = true; //!< the fluxes use face-centre values only: bound those
     ConstField state, aux;
     BoundaryView bc;

@@ -83,6 +83,7 @@ void computeEos(const ConstField& state, const View<const int*>& cellMaterial, c
     using S = StateLayout<D, P>;
     auto eos = KOKKOS_LAMBDA(const LO i)
     {
+        captureBeforeConstexpr(stress);
         const double rho = 1.0 / state(i, S::omega);
         const Material& m = materials(cellMaterial(i));
         Vec<D> v, J;
@@ -148,6 +149,7 @@ void nodalImpedance(const MeshView<D>& mesh, const ConstField& state, const View
     auto corner = geom.corner;
     auto impedance = KOKKOS_LAMBDA(const LO i)
     {
+        captureBeforeConstexpr(length);
         const Material& m = materials(cellMaterial(i));
         const double rho = 1.0 / state(i, S::omega);
         const double a = aux(i, Aux::sound);
@@ -488,6 +490,7 @@ PicardCheck strainUpdate(const MeshView<D>& mesh, const ConstField& state, const
     auto transported = midpoint ? fluxState : state;
     auto update = KOKKOS_LAMBDA(const LO i, double (&ext)[3])
     {
+        captureBeforeConstexpr(plasticHint, plasticWork, count);
         const Material& m = materials(cellMaterial(i));
         const gpr::Sym3 G0 = loadSym3(state, i, S::G);
         const double newVolume = cellVolumeAt<D>(mesh, xNew, i);

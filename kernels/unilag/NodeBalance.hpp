@@ -32,7 +32,14 @@ template <int D> struct NodeBalanceRates
 //! Columns of the per-node scratch written by nodeBalance before it is reduced.
 template <int D> struct NodeBalanceLayout
 {
-    static constexpr int force = 0, power = D, passivePower = D + 1, imbalance = D + 2, ncomp = D + 3;
+    enum : int // enumerators, not static members: device code may bind them to references (View indices)
+    {
+        force = 0,
+        power = D,
+        passivePower = D + 1,
+        imbalance = D + 2,
+        ncomp = D + 3
+    };
 };
 
 /*! F_r and its expected value at the nodes in `nodes` (owned), per node into `out` (NodeBalanceLayout), then reduced.

@@ -32,12 +32,15 @@ using PhysicsHydro = Physics<false, false, false>;
 template <int D, class P = PhysicsHydro>
 struct StateLayout
 {
-    static constexpr int omega = 0;        //!< specific volume 1/rho
-    static constexpr int vel = 1;          //!< velocity, D columns
-    static constexpr int energy = 1 + D;   //!< specific total energy E = eps + |v|^2/2 + E_e(G) + alpha^2 |J|^2/2
-    static constexpr int G = 2 + D;        //!< G_e as Sym3 (xx, yy, zz, xy, xz, yz), 6 columns (strain only)
-    static constexpr int J = G + (P::strain ? 6 : 0); //!< thermal impulse, D columns (heat only)
-    static constexpr int ncomp = J + (P::heat ? D : 0);
+    enum : int // enumerators, not static members: device code may bind them to references (View indices)
+    {
+        omega = 0,                     //!< specific volume 1/rho
+        vel = 1,                       //!< velocity, D columns
+        energy = 1 + D,                //!< specific total energy E = eps + |v|^2/2 + E_e(G) + alpha^2 |J|^2/2
+        G = 2 + D,                     //!< G_e as Sym3 (xx, yy, zz, xy, xz, yz), 6 columns (strain only)
+        J = G + (P::strain ? 6 : 0),   //!< thermal impulse, D columns (heat only)
+        ncomp = J + (P::heat ? D : 0),
+    };
 };
 
 //! The hydrodynamic state: the first 2 + D columns of every layout.
@@ -47,13 +50,16 @@ using HydroState = StateLayout<D, PhysicsHydro>;
 //! Column indices of per-cell quantities derived from the state (EOS, temperature, stress).
 struct Aux
 {
-    static constexpr int pressure = 0;  //!< EOS pressure p(rho, eps)
-    static constexpr int sound = 1;     //!< signal speed a = sqrt(c0^2 + 4/3 c_sh^2 + c_h^2) (docs/gpr-model.md 1.5)
-    static constexpr int impedance = 2; //!< z = rho s of the nodal solver, s the signal column (nodalImpedance)
-    static constexpr int eps = 3;       //!< specific internal energy eps = E - kinetic - elastic - thermal
-    static constexpr int theta = 4;     //!< temperature (heat only; 0 otherwise)
-    static constexpr int signal = 5;    //!< s = a_eff + Gamma_D |dv|: the nodal solver's and the time step's speed
-    static constexpr int stress = 6;    //!< shear stress sigma as Sym3, 6 columns (strain only)
+    enum : int // enumerators, not static members: device code may bind them to references (View indices)
+    {
+        pressure = 0,  //!< EOS pressure p(rho, eps)
+        sound = 1,     //!< signal speed a = sqrt(c0^2 + 4/3 c_sh^2 + c_h^2) (docs/gpr-model.md 1.5)
+        impedance = 2, //!< z = rho s of the nodal solver, s the signal column (nodalImpedance)
+        eps = 3,       //!< specific internal energy eps = E - kinetic - elastic - thermal
+        theta = 4,     //!< temperature (heat only; 0 otherwise)
+        signal = 5,    //!< s = a_eff + Gamma_D |dv|: the nodal solver's and the time step's speed
+        stress = 6,    //!< shear stress sigma as Sym3, 6 columns (strain only)
+    };
     template <class P>
     static constexpr int ncomp()
     {

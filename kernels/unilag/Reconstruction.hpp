@@ -43,11 +43,14 @@ namespace unilag
 template <int D, class P>
 struct ReconLayout
 {
-    static constexpr int vel = 0;                            //!< velocity, D quantities
-    static constexpr int pressure = D;                       //!< pressure
-    static constexpr int stress = D + 1;                     //!< shear stress as Sym3, 6 quantities (strain only)
-    static constexpr int nq = D + 1 + (P::strain ? 6 : 0);   //!< number of reconstructed quantities
-    static constexpr int ncomp = nq * D;                     //!< columns of the gradient field
+    enum : int // enumerators, not static members: device code may bind them to references (View indices)
+    {
+        vel = 0,                          //!< velocity, D quantities
+        pressure = D,                     //!< pressure
+        stress = D + 1,                   //!< shear stress as Sym3, 6 quantities (strain only)
+        nq = D + 1 + (P::strain ? 6 : 0), //!< number of reconstructed quantities
+        ncomp = nq * D,                   //!< columns of the gradient field
+    };
 };
 
 /*! What the flux kernels need to evaluate a reconstruction: the limited gradients (empty: first order), and the node
@@ -218,8 +221,11 @@ KOKKOS_INLINE_FUNCTION constexpr Bounds uniformBounds(Limiter limiter)
 template <int D, class P>
 struct MechanicalQuantities
 {
-    static constexpr int nq = ReconLayout<D, P>::nq;
-    static constexpr int bdata = ReconLayout<D, P>::pressure;
+    enum : int // enumerators, not static members: device code may bind them to references (View indices)
+    {
+        nq = ReconLayout<D, P>::nq,
+        bdata = ReconLayout<D, P>::pressure,
+    };
     static constexpr bool atFaces = false; //!< limited at the vertices (the nodal solver evaluates it there)
     ConstField state, aux, stress;
     BoundaryView bc;

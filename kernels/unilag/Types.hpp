@@ -29,6 +29,13 @@ inline Kokkos::RangePolicy<Policy> range(std::size_t n)
     return Kokkos::RangePolicy<Policy>(0, n);
 }
 
+/*! nvcc cannot capture a variable into an extended lambda where the lambda first names it inside `if constexpr`;
+ *  such a lambda names those variables at its top with `captureBeforeConstexpr(a, b)` (a no-op). */
+template <class... T>
+KOKKOS_INLINE_FUNCTION void captureBeforeConstexpr(const T&...)
+{
+}
+
 //! Small vector in D dimensions (D = 2 or 3), usable inside kernels.
 template <int D>
 struct Vec
