@@ -5,8 +5,13 @@
 # Not part of CI: the toolkit is 1.6 GB of packages. Idempotent; a second call rebuilds only the check.
 #
 #   scripts/cuda-check.sh          install what is missing, build Kokkos for CUDA once, compile the check
+#   scripts/cuda-check.sh --if-installed
+#                                  only the check, where the toolkit and the CUDA Kokkos are already there; else
+#                                  exit 77 (ctest's test cuda_compile_check: skipped on machines without them)
 #   UNILAG_DEPS=/some/dir          the cache of scripts/setup.sh (default ~/.cache/unilag)
 set -euo pipefail
+IF_INSTALLED=0
+if [ "${1:-}" = "--if-installed" ]; then IF_INSTALLED=1; fi
 
 ROOT="$(cd "$(dirname "$0")/.." && pwd)"
 DEPS="${UNILAG_DEPS:-${XDG_CACHE_HOME:-$HOME/.cache}/unilag}"
@@ -21,51 +26,64 @@ if [ "$(id -u)" -ne 0 ]; then SUDO="sudo"; fi
 # the newest host compiler CUDA 11.8 accepts.
 export PATH="/usr/bin:$PATH" CUDA_ROOT=/usr NVCC_WRAPPER_DEFAULT_COMPILER=g++-11
 
+TREE="$DEPS/src/tree"
+WRAPPER="$TREE/packages/kokkos/bin/nvcc_wrapper"
 # ---------------------------------------------------------------- 1. Debian's CUDA toolkit and g++-11
-bash "$ROOT/scripts/setup.sh" >/dev/null # Debian packages, deb-src entry, Trilinos' source in the cache
-if [ -x /usr/bin/nvcc ] && command -v g++-11 >/dev/null; then
-  log "nvidia-cuda-toolkit installed"
-else
-  if ! apt-cache policy nvidia-cuda-toolkit 2>/dev/null | grep -q "Candidate: [0-9]"; then
-    log "adding bookworm's contrib and non-free components (nvidia-cuda-toolkit)"
-    $SUDO tee /etc/apt/sources.list.d/unilag-nonfree.sources >/dev/null <<'SRC'
+install_toolkit() {
+  bash "$ROOT/scripts/setup.sh" >/dev/null # Debian packages, deb-src entry, Trilinos' source in the cache
+  if [ -x /usr/bin/nvcc ] && command -v g++-11 >/dev/null; then
+    log "nvidia-cuda-toolkit installed"
+  else
+    if ! apt-cache policy nvidia-cuda-toolkit 2>/dev/null | grep -q "Candidate: [0-9]"; then
+      log "adding bookworm's contrib and non-free components (nvidia-cuda-toolkit)"
+      $SUDO tee /etc/apt/sources.list.d/unilag-nonfree.sources >/dev/null <<'SRC'
 Types: deb
 URIs: http://deb.debian.org/debian
 Suites: bookworm
 Components: contrib non-free
 Signed-By: /usr/share/keyrings/debian-archive-keyring.gpg
 SRC
-    $SUDO apt-get update -qq
+      $SUDO apt-get update -qq
+    fi
+    log "installing nvidia-cuda-toolkit and g++-11 (about 1.6 GB)"
+    DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends nvidia-cuda-toolkit g++-11 \
+      >/dev/null
   fi
-  log "installing nvidia-cuda-toolkit and g++-11 (about 1.6 GB)"
-  DEBIAN_FRONTEND=noninteractive $SUDO apt-get install -y -qq --no-install-recommends nvidia-cuda-toolkit g++-11 \
-    >/dev/null
-fi
+}
 
 # ---------------------------------------------------------------- 2. Kokkos 3.4 for CUDA, from Trilinos' source
-TREE="$DEPS/src/tree"
-if [ ! -f "$TREE/packages/kokkos/CMakeLists.txt" ]; then
-  log "unpacking Trilinos' source (Debian's package)"
-  mkdir -p "$DEPS/src"
-  (cd "$DEPS/src" && { ls trilinos_*.dsc >/dev/null 2>&1 || apt-get source --download-only trilinos >/dev/null; } \
-    && rm -rf tree && dpkg-source --no-check -x trilinos_*.dsc tree >/dev/null)
-fi
-WRAPPER="$TREE/packages/kokkos/bin/nvcc_wrapper"
-if [ -f "$STAMP" ] && [ "$(cat "$STAMP")" = "$STAMP_ID" ]; then
-  log "Kokkos for CUDA cached at $KOKKOS_PREFIX"
-else
-  BUILD="$DEPS/kokkos-cuda-build"
-  rm -rf "$BUILD" "$KOKKOS_PREFIX"
-  log "building Kokkos 3.4 for CUDA (sm_80; about 2 minutes on 2 cores)"
-  cmake -S "$TREE/packages/kokkos" -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=Release \
-    -DCMAKE_INSTALL_PREFIX="$KOKKOS_PREFIX" -DCMAKE_CXX_COMPILER="$WRAPPER" -DCMAKE_CXX_STANDARD=17 \
-    -DKokkos_ENABLE_CUDA=ON -DKokkos_ENABLE_CUDA_LAMBDA=ON -DKokkos_ENABLE_SERIAL=ON -DKokkos_ARCH_AMPERE80=ON \
-    -DKokkos_ENABLE_TESTS=OFF > "$DEPS/kokkos-cuda-configure.log" 2>&1 \
-    || { tail -30 "$DEPS/kokkos-cuda-configure.log"; exit 1; }
-  cmake --build "$BUILD" > "$DEPS/kokkos-cuda-build.log" 2>&1 || { tail -30 "$DEPS/kokkos-cuda-build.log"; exit 1; }
-  cmake --install "$BUILD" > /dev/null
-  rm -rf "$BUILD"
-  echo "$STAMP_ID" > "$STAMP"
+build_kokkos() {
+  if [ ! -f "$TREE/packages/kokkos/CMakeLists.txt" ]; then
+    log "unpacking Trilinos' source (Debian's package)"
+    mkdir -p "$DEPS/src"
+    (cd "$DEPS/src" && { ls trilinos_*.dsc >/dev/null 2>&1 || apt-get source --download-only trilinos >/dev/null; } \
+      && rm -rf tree && dpkg-source --no-check -x trilinos_*.dsc tree >/dev/null)
+  fi
+  if [ -f "$STAMP" ] && [ "$(cat "$STAMP")" = "$STAMP_ID" ]; then
+    log "Kokkos for CUDA cached at $KOKKOS_PREFIX"
+  else
+    BUILD="$DEPS/kokkos-cuda-build"
+    rm -rf "$BUILD" "$KOKKOS_PREFIX"
+    log "building Kokkos 3.4 for CUDA (sm_80; about 2 minutes on 2 cores)"
+    cmake -S "$TREE/packages/kokkos" -B "$BUILD" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+      -DCMAKE_INSTALL_PREFIX="$KOKKOS_PREFIX" -DCMAKE_CXX_COMPILER="$WRAPPER" -DCMAKE_CXX_STANDARD=17 \
+      -DKokkos_ENABLE_CUDA=ON -DKokkos_ENABLE_CUDA_LAMBDA=ON -DKokkos_ENABLE_SERIAL=ON -DKokkos_ARCH_AMPERE80=ON \
+      -DKokkos_ENABLE_TESTS=OFF > "$DEPS/kokkos-cuda-configure.log" 2>&1 \
+      || { tail -30 "$DEPS/kokkos-cuda-configure.log"; exit 1; }
+    cmake --build "$BUILD" > "$DEPS/kokkos-cuda-build.log" 2>&1 || { tail -30 "$DEPS/kokkos-cuda-build.log"; exit 1; }
+    cmake --install "$BUILD" > /dev/null
+    rm -rf "$BUILD"
+    echo "$STAMP_ID" > "$STAMP"
+  fi
+}
+
+if [ "$IF_INSTALLED" = 0 ]; then
+  install_toolkit
+  build_kokkos
+elif ! { [ -x /usr/bin/nvcc ] && command -v g++-11 >/dev/null && [ -x "$WRAPPER" ] && [ -f "$STAMP" ] \
+         && [ "$(cat "$STAMP")" = "$STAMP_ID" ]; }; then
+  log "skipped: no CUDA toolkit or CUDA Kokkos here (scripts/cuda-check.sh installs them)"
+  exit 77
 fi
 
 # ---------------------------------------------------------------- 3. the check
@@ -80,4 +98,5 @@ if grep -q "FAILED:" "$CHECK.log" || grep -qi "warning" "$CHECK.log"; then
   log "FAILED: nvcc rejects or warns about the code above (full log: $CHECK.log)"
   exit 1
 fi
-log "kernels/ and the tube launchers compile for CUDA sm_80 with nvcc $(nvcc --version | sed -n 's/.*release \([0-9.]*\).*/\1/p') ($(( $(date +%s) - t0 )) s)"
+version=$(nvcc --version | sed -n 's/.*release \([0-9.]*\).*/\1/p')
+log "kernels/ and the tube launchers compile for CUDA sm_80 with nvcc $version ($(( $(date +%s) - t0 )) s)"
