@@ -11,6 +11,7 @@
 
 #include <Teuchos_YamlParameterListHelpers.hpp>
 
+#include "unilag/EntropyFilter.hpp"
 #include "unilag/Gpr.hpp"
 
 #include "physics/Exact.hpp"
@@ -326,6 +327,10 @@ void readScheme(ConfigNode& root, Scene& s)
                                           {{"lumped", CornerLoad::Lumped}, {"consistent", CornerLoad::Consistent}});
     s.integrator = sch.option<Integrator>("integrator", "midpoint",
                                           {{"midpoint", Integrator::Midpoint}, {"ars222", Integrator::Ars222}});
+    s.entropyFilter = sch.nonNegative("entropy_filter", 0.0);
+    if (s.entropyFilter > entropy_filter::kMaxCoefficient)
+        sch.fail("entropy_filter", "must be in [0, " + num(entropy_filter::kMaxCoefficient) + "] (eps stays within " +
+                                       "its neighbours' range up to there at CFL 1), found " + num(s.entropyFilter));
     if (s.pressureLimiter && s.reconstruct == Reconstructed::Velocity)
         sch.fail("pressure_limiter", "the pressure is not reconstructed with reconstruct: velocity");
     if (s.integrator == Integrator::Ars222 && s.order != 2)

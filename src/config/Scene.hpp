@@ -154,6 +154,7 @@ struct Scene
     Reconstructed reconstruct = Reconstructed::All; //!< order 2 only: every quantity, or the velocity alone
     CornerLoad cornerLoad = CornerLoad::Lumped;     //!< order 2 only: how the traction loads the corners
     Integrator integrator = Integrator::Midpoint; //!< order 2 only (ars222 is rejected at order 1)
+    double entropyFilter = 0.0; //!< C of the entropy filter after each step (EntropyFilter.hpp), 0 = none
 
     std::string outputDirectory = "output";
     std::string outputSource = "output folder"; //!< where outputDirectory came from, for messages ("--output", a key)

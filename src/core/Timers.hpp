@@ -23,6 +23,7 @@ enum class Phase : int
     StrainUpdate,   //!< G_e transport and relaxation (the Picard iterations)
     HeatFluxes,     //!< Rusanov heat fluxes
     CellUpdate,     //!< v, E, omega (and J) from the forces
+    EntropyFilter,  //!< the entropy filter after a step (scheme.entropy_filter)
     Halo,           //!< ghost exchanges
     Output,         //!< HDF5/XDMF dumps
     Check,          //!< the force balance at the nodes (boundary impulse and work; every node with --check)
@@ -33,7 +34,7 @@ enum class Phase : int
 inline const char* phaseName(Phase p)
 {
     static const char* names[] = {"geometry",      "eos",         "nodal_solve", "time_step", "reconstruction",
-                                  "strain_update", "heat_fluxes", "cell_update", "halo",      "io",
+                                  "strain_update", "heat_fluxes", "cell_update", "entropy_filter", "halo",      "io",
                                   "check"};
     return names[int(p)];
 }

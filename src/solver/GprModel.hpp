@@ -162,6 +162,8 @@ GprModel<D, P>::GprModel(const Scene& scene_, std::shared_ptr<DistributedMesh> m
             fields.add("heat_gradients_n", Entity::Cell, heat::Quantities<D, P>::ncomp, S_);
         }
     }
+    if (scene.entropyFilter > 0.0)
+        fields.add("eps_gradient", Entity::Cell, D, S_); // the entropy filter's grad eps (EntropyFilter.hpp)
     allocateWork();
 }
 

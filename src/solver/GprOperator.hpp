@@ -21,6 +21,7 @@
 #include "solver/GprBalance.hpp"
 #include "solver/GprModel.hpp"
 #include "unilag/Ars.hpp"
+#include "unilag/EntropyFilter.hpp"
 #include "unilag/Heat.hpp"
 #include "unilag/NodeBalance.hpp"
 
@@ -197,6 +198,27 @@ template <int D, class P> class GprOperator
         md_.fields.swap("x", "x_new");
         std::swap(md_.geom, md_.geomNew); // owned cells: written by the update; ghosts are computed here
         refreshGeometry(md_.m.nOwnedCells);
+        computeAux(lagged);
+    }
+
+    /*! The entropy filter over dt (scheme.entropy_filter; EntropyFilter.hpp, docs/gpr-model.md 2.7) on the state
+     *  that advance() left, with its ghosts and EOS (impedance against lagged) renewed. Collective; no-op at C = 0. */
+    void filterEntropy(double dt, const char* lagged)
+    {
+        if (!(md_.scene.entropyFilter > 0.0))
+            return;
+        {
+            ScopedTimer timer(md_.timers, Phase::EntropyFilter);
+            limitedGradientsOf<D>(md_.m, entropy_filter::EpsQuantity<D>{md_.aux, md_.bc}, md_.geom, md_.read("x"),
+                                  md_.write("eps_gradient"), md_.bc, Limiter::None);
+        }
+        halo("eps_gradient");
+        {
+            ScopedTimer timer(md_.timers, Phase::EntropyFilter);
+            unilag::filterEntropy<D, P>(md_.m, md_.write("state"), md_.aux, md_.geom, md_.mass(),
+                                        md_.read("eps_gradient"), dt, md_.scene.entropyFilter);
+        }
+        halo("state");
         computeAux(lagged);
     }
 

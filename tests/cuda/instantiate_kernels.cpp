@@ -13,6 +13,7 @@
 #include "unilag/Ars.hpp"
 #include "unilag/CellUpdate.hpp"
 #include "unilag/CellUpdateApply.hpp"
+#include "unilag/EntropyFilter.hpp"
 #include "unilag/Geometry.hpp"
 #include "unilag/Heat.hpp"
 #include "unilag/Hydro.hpp"
@@ -53,6 +54,8 @@ template <int D, class P> void mechanics(Launchers& out)
     keep(out, &updateCellsFromStages<D, P, 3>);
     keep(out, &flagInadmissible<D, P>);
     keep(out, &limitedGradients<D, P>);
+    keep(out, &filterEntropy<D, P>);
+    keep(out, &limitedGradientsOf<D, entropy_filter::EpsQuantity<D>>);
     if constexpr (P::strain)
     {
         keep(out, &strainUpdate<D, P>);

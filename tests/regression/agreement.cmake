@@ -24,7 +24,9 @@ set(VARIANT_plastic_heat ${VARIANT_plastic} ${VARIANT_heat})
 # and in 3D a viscous, heat-conducting gas (mu = 1e-3: tau1 = 0.024; the laws' other branch, as the former gpr3d_*)
 set(VARIANT_viscous_heat ${VARIANT_STRAIN} --set materials.gas.strain_relaxation.law=viscous
                          --set materials.gas.strain_relaxation.viscosity=1.0e-3 ${VARIANT_heat})
-set(VARIANTS hydro elastic heat plastic plastic_heat)
+# and the hydro blast with the entropy filter (EntropyFilter.hpp: its gradient's halo, the exchange across ranks)
+set(VARIANT_filter --set scheme.entropy_filter=0.05)
+set(VARIANTS hydro elastic heat plastic plastic_heat filter)
 set(VARIANTS_2 ${VARIANTS})
 set(VARIANTS_3 ${VARIANTS} viscous_heat)
 # One run of the matrix: NAME = variant<dim>d_<variant>_o<order>_np<ranks>[_t<threads>] (order 1, 2 or ars), output

@@ -26,6 +26,10 @@ add_test(NAME error_limiter COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err7
 add_test(NAME error_pressure_limiter COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err8
          "sedov2d.yaml: key 'scheme.pressure_limiter': the pressure is not reconstructed with reconstruct: velocity"
          -- ${UNILAG} run ${INPUTS}/sedov2d.yaml --set scheme.pressure_limiter=vertex_based)
+# scheme.entropy_filter above 0.25 could take a cell's eps out of its neighbours' range (EntropyFilter.hpp).
+add_test(NAME error_entropy_filter COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err_entropy_filter
+         "sedov2d.yaml: key 'scheme.entropy_filter': must be in \\[0, 0.25\\].*found 0.3"
+         -- ${UNILAG} run ${INPUTS}/sedov2d.yaml --set scheme.entropy_filter=0.3)
 add_test(NAME error_mpi_unknown_key COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err6 "key 'time.max_stpes'"
          -- ${MPI_RUN} 2 ${UNILAG} run ${SCENES}/unknown_key.yaml)
 # Bad physical input of the GPR model: the scene reader names the key before the solver starts.

@@ -1,0 +1,173 @@
+// The entropy filter (kernels/unilag/EntropyFilter.hpp) on hand-built distorted simplex meshes, without MPI maps:
+// a linear eps is left alone, a random one exchanges energy conservatively and only from hotter to colder cells,
+// and shocked cells neither give nor take.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <random>
+#include <vector>
+
+#include "HostMesh.hpp"
+#include "unilag/EntropyFilter.hpp"
+
+namespace
+{
+
+using unilag::Aux;
+using unilag::Field;
+using unilag::LO;
+using PH = unilag::PhysicsHydro;
+using unilag_test::HostMesh;
+
+template <int D> struct Filter
+{
+    using S = unilag::StateLayout<D, PH>;
+    static constexpr int NV = D + 1;
+
+    HostMesh<D> h;
+    LO nCells;
+    unilag::MeshView<D> mesh;
+    unilag::BoundaryView bc;
+    Field x, state, aux, grad;
+    unilag::View<double*> mass;
+    unilag::CellGeometry geom;
+
+    explicit Filter(HostMesh<D> hm)
+        : h(std::move(hm)), nCells(h.nCells()), x("x", h.nNodes(), D), state("state", nCells, S::ncomp),
+          aux("aux", nCells, Aux::ncomp<PH>()), grad("grad", nCells, D), mass("mass", nCells), geom(nCells, D)
+    {
+        unilag_test::connect<D>(h, unilag_test::wallGroup);
+        mesh = unilag_test::deviceMesh<D>(h, x);
+        unilag::View<int*> type("type", 2 * D); // free boundaries: no mirror images, the plain least squares
+        Kokkos::deep_copy(type, int(unilag::BcFree));
+        bc.type = type;
+        EXPECT_GT(unilag::computeGeometry<D>(mesh, x, geom, nCells), 0.0) << "the distorted mesh is tangled";
+    }
+
+    //! eps(i, centroid), density 1 + 0.3 u, sound speed 1, signal speed (shocked: 2, else 1); mass = rho |T|.
+    template <class Eps, class Shocked> void initialize(const Eps& eps, const Shocked& shocked, unsigned seed)
+    {
+        std::mt19937 rng(seed);
+        std::uniform_real_distribution<double> u(0.0, 1.0);
+        auto c = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), geom.centroid);
+        auto v = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), geom.volume);
+        auto sh = Kokkos::create_mirror_view(state);
+        auto ah = Kokkos::create_mirror_view(aux);
+        auto mh = Kokkos::create_mirror_view(mass);
+        Kokkos::deep_copy(sh, 0.0);
+        Kokkos::deep_copy(ah, 0.0);
+        for (LO i = 0; i < nCells; ++i)
+        {
+            double xc[3] = {0.0, 0.0, 0.0};
+            for (int d = 0; d < D; ++d)
+                xc[d] = c(i, d);
+            const double rho = 1.0 + 0.3 * u(rng);
+            sh(i, S::omega) = 1.0 / rho;
+            const double e = eps(i, xc);
+            sh(i, S::energy) = e;
+            ah(i, Aux::eps) = e;
+            ah(i, Aux::sound) = 1.0;
+            ah(i, Aux::signal) = shocked(i) ? 2.0 : 1.0;
+            mh(i) = rho * v(i);
+        }
+        Kokkos::deep_copy(state, sh);
+        Kokkos::deep_copy(aux, ah);
+        Kokkos::deep_copy(mass, mh);
+    }
+
+    //! One filter step of dt with coefficient C; the energy change of every cell on the host.
+    std::vector<double> run(double dt, double coefficient)
+    {
+        unilag::limitedGradientsOf<D>(mesh, unilag::entropy_filter::EpsQuantity<D>{aux, bc}, geom, x, grad, bc,
+                                      unilag::Limiter::None);
+        auto before = Kokkos::create_mirror(state); // a copy: a mirror *view* of a host field is the field itself
+        Kokkos::deep_copy(before, state);
+        unilag::filterEntropy<D, PH>(mesh, state, aux, geom, mass, grad, dt, coefficient);
+        auto after = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), state);
+        std::vector<double> dE(nCells);
+        for (LO i = 0; i < nCells; ++i)
+            dE[i] = after(i, S::energy) - before(i, S::energy);
+        return dE;
+    }
+
+    double minLength() const
+    {
+        auto l = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), geom.length);
+        double m = 1e300;
+        for (LO i = 0; i < nCells; ++i)
+            m = std::min(m, l(i));
+        return m;
+    }
+};
+
+template <int D> HostMesh<D> distorted()
+{
+    if constexpr (D == 2)
+        return unilag_test::squareMesh(12, 0.3, 41);
+    else
+        return unilag_test::cubeMesh(5, 0.3, 42);
+}
+
+auto never = [](LO) { return false; };
+
+template <int D> void checkLinear()
+{
+    Filter<D> f(distorted<D>());
+    f.initialize([](LO, const double* c) { return 2.0 + 0.7 * c[0] - 0.4 * c[1] + 0.3 * c[2]; }, never, 1);
+    const auto dE = f.run(0.5 * f.minLength(), 0.25);
+    for (LO i = 0; i < f.nCells; ++i)
+        EXPECT_LE(std::abs(dE[i]), 1e-13) << "cell " << i;
+}
+
+TEST(EntropyFilter, LeavesLinearFieldsAlone2D) { checkLinear<2>(); }
+TEST(EntropyFilter, LeavesLinearFieldsAlone3D) { checkLinear<3>(); }
+
+/*! A random eps: the exchange conserves the energy to round-off, moves heat from hotter to colder cells only
+ *  (sum_i m_i dE_i eps_i <= 0, each face's flux times the jump against it), changes most cells, and shocked cells
+ *  (every fifth) keep their energy. */
+template <int D> void checkRandom()
+{
+    constexpr int NV = D + 1;
+    Filter<D> f(distorted<D>());
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    std::vector<double> eps(f.nCells);
+    for (auto& e : eps)
+        e = 1.0 + u(rng);
+    auto shocked = [](LO i) { return i % 5 == 0; };
+    f.initialize([&](LO i, const double*) { return eps[i]; }, shocked, 2);
+    const auto dE = f.run(0.5 * f.minLength(), 0.25);
+    auto m = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), f.mass);
+    double sum = 0.0, scale = 0.0, work = 0.0;
+    int changed = 0;
+    for (LO i = 0; i < f.nCells; ++i)
+    {
+        sum += m(i) * dE[i];
+        scale += std::abs(m(i) * dE[i]);
+        work += m(i) * dE[i] * eps[i];
+        changed += dE[i] != 0.0;
+        if (shocked(i))
+        {
+            EXPECT_EQ(dE[i], 0.0) << "shocked cell " << i;
+        }
+        bool isolated = true; // every neighbour shocked or across the boundary: nothing to exchange
+        for (int k = 0; k < NV; ++k)
+        {
+            const LO j = f.h.neighbour[NV * i + k];
+            isolated = isolated && (j < 0 || shocked(j));
+        }
+        if (isolated)
+        {
+            EXPECT_EQ(dE[i], 0.0) << "cell " << i << " has no unshocked neighbour";
+        }
+    }
+    EXPECT_GT(changed, f.nCells / 2);
+    EXPECT_LE(std::abs(sum), 1e-14 * scale) << "sum " << sum << " scale " << scale;
+    EXPECT_LT(work, 0.0) << "heat must flow from hotter to colder cells";
+}
+
+TEST(EntropyFilter, ConservesAndFlowsDownhill2D) { checkRandom<2>(); }
+TEST(EntropyFilter, ConservesAndFlowsDownhill3D) { checkRandom<3>(); }
+
+} // namespace
