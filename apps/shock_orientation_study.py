@@ -11,7 +11,7 @@ tests/scenes/piston_cold2d.yaml): exact density 4 behind the shock, which runs a
 at order 1 and with four order-2 schemes (the default barth_jespersen limiter with all quantities reconstructed,
 vertex_based with all, vertex_based with the velocity alone, and barth_jespersen with vertex-based bounds on the
 pressure alone, pressure_limiter: vertex_based), and order 1 and the velocity-alone order 2 with the entropy filter
-(scheme.entropy_filter: 0.05; `_ef`). Printed and written as CSV:
+(scheme.entropy_filter: 0.05; `_ef`; not on lattice_x, which has no scatter to filter). Printed and written as CSV:
 the mean density behind the shock and its cell-to-cell standard deviation (the pressure there is uniform to 1e-4, so
 the scatter is entropy); PNG beside it: density against x.
 
@@ -57,6 +57,8 @@ SCHEMES = {"o1": "order: 1", "o2": "order: 2", "o2_vb": "order: 2, limiter: vert
 COLOURS = {"o1": "tab:blue", "o2": "tab:red", "o2_vb": "tab:green", "o2_vb_vel": "tab:orange", "o2_pv": "tab:purple",
            "o1_ef": "tab:cyan", "o2_vb_vel_ef": "tab:brown"}
 FILTERED = {"o1_ef": "o1", "o2_vb_vel_ef": "o2_vb_vel"}  # a scheme with the entropy filter: the same without
+# lattice_x leaves no scatter to filter (0.00-0.02% measured with the filter): those runs are skipped, for CI time
+SKIPPED = {("lattice_x", f) for f in FILTERED}
 X_PISTON, X_SHOCK, RHO_BEHIND = X0 + T_END, X0 + T_END * 4.0 / 3.0, 4.0
 
 
@@ -130,6 +132,8 @@ def main():
                   "lattice_x": f"{{ file: {tmp}/lattice_x.msh }}", "lattice_y": f"{{ file: {tmp}/lattice_y.msh }}"}
         for name, mesh in meshes.items():
             for order, scheme in SCHEMES.items():
+                if (name, order) in SKIPPED:
+                    continue
                 out = f"{tmp}/{name}_{order}"
                 scene = f"{tmp}/{name}_{order}.yaml"
                 with open(scene, "w") as f:
@@ -152,6 +156,8 @@ def main():
     fig, axes = plt.subplots(1, 3, figsize=(13, 3.6), sharey=True)
     for ax, name in zip(axes, meshes):
         for order, colour in COLOURS.items():
+            if (name, order) in SKIPPED:
+                continue
             xc, rho = profiles[(name, order)]
             ax.plot(xc, rho, ".", ms=1.5, color=colour, label=order)
         ax.axhline(RHO_BEHIND, color="k", lw=0.6)
