@@ -1,0 +1,118 @@
+#!/usr/bin/env bash
+# The kernels on a GPU: builds apps/bench_portable.cpp for CUDA (Kokkos 3.4 from the same Trilinos 13.2 source as
+# scripts/setup.sh, with the nvcc on PATH), and runs it where a GPU is. docs/parallel.md 7 has the figures.
+#
+#   scripts/gpu-bench.sh build        Kokkos for CUDA (cached) and build/gpu-bench/unilag_bench_portable; needs
+#                                     scripts/setup.sh's source cache and an nvcc of CUDA 12 or 13, no GPU
+#   scripts/gpu-bench.sh run OUTDIR   on the GPU machine (carry build/gpu-bench): the self-check and the CPU
+#                                     reference comparison, then 2D and 3D, numbered in order and shuffled; CSVs
+#                                     and the log to OUTDIR
+#   UNILAG_DEPS=/some/dir             the cache of scripts/setup.sh (default ~/.cache/unilag)
+#
+# Kokkos 3.4 predates CUDA 12 and 13 and Hopper: four patches, applied to a copy of its source, make it build
+# and run there.
+#  - nvcc_wrapper's default architecture sm_35 is gone from nvcc: sm_80 (its PTX runs on later GPUs, Hopper too).
+#  - cuda_fp16.h's __half no longer converts as Kokkos 3.4's half_t expects: half_t falls back to float (unused).
+#  - cudaMemPrefetchAsync takes a cudaMemLocation and flags since CUDA 13 (managed memory only; unused here).
+#  - Kokkos refuses a GPU of another major compute capability than compiled for: a later one runs the PTX.
+set -euo pipefail
+ROOT="$(cd "$(dirname "$0")/.." && pwd)"
+DEPS="${UNILAG_DEPS:-${XDG_CACHE_HOME:-$HOME/.cache}/unilag}"
+OUT_BIN="$ROOT/build/gpu-bench"
+log() { printf '[gpu-bench] %s\n' "$*" >&2; }
+
+build() {
+  command -v nvcc >/dev/null || { log "no nvcc on PATH"; exit 1; }
+  local cuda tree src prefix stamp id
+  cuda=$(nvcc --version | sed -n 's/.*release \([0-9.]*\).*/\1/p')
+  tree="$DEPS/src/tree"
+  [ -f "$tree/packages/kokkos/CMakeLists.txt" ] || bash "$ROOT/scripts/setup.sh" >/dev/null
+  prefix="$DEPS/kokkos-3.4-cuda$cuda-sm80"
+  stamp="$prefix/.unilag-stamp"
+  id="kokkos-3.4 cuda-$cuda sm80 serial patches-v2"
+  src="$DEPS/kokkos-cuda$cuda-src"
+  export NVCC_WRAPPER_DEFAULT_COMPILER=g++
+  if [ -f "$stamp" ] && [ "$(cat "$stamp")" = "$id" ]; then
+    log "Kokkos for CUDA $cuda cached at $prefix"
+  else
+    rm -rf "$src" "$prefix" "$src-build"
+    cp -r "$tree/packages/kokkos" "$src"
+    patch_kokkos "$src"
+    log "building Kokkos 3.4 for CUDA $cuda (sm_80; about 5 minutes on 2 cores)"
+    cmake -S "$src" -B "$src-build" -G Ninja -DCMAKE_BUILD_TYPE=Release -DCMAKE_INSTALL_PREFIX="$prefix" \
+      -DCMAKE_CXX_COMPILER="$src/bin/nvcc_wrapper" -DCMAKE_CXX_STANDARD=17 -DKokkos_ENABLE_CUDA=ON \
+      -DKokkos_ENABLE_CUDA_LAMBDA=ON -DKokkos_ENABLE_SERIAL=ON -DKokkos_ARCH_AMPERE80=ON -DKokkos_ENABLE_TESTS=OFF \
+      > "$src-build.log" 2>&1 || { tail -30 "$src-build.log"; exit 1; }
+    cmake --build "$src-build" >> "$src-build.log" 2>&1 || { grep -A3 "error" "$src-build.log" | head -40; exit 1; }
+    cmake --install "$src-build" > /dev/null
+    rm -rf "$src-build"
+    echo "$id" > "$stamp"
+  fi
+  mkdir -p "$OUT_BIN"
+  cmake -S "$ROOT/tests/cuda" -B "$OUT_BIN/cmake" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+    -DCMAKE_CXX_COMPILER="$src/bin/nvcc_wrapper" -DKokkos_ROOT="$prefix" > "$OUT_BIN/configure.log" 2>&1 \
+    || { tail -30 "$OUT_BIN/configure.log"; exit 1; }
+  cmake --build "$OUT_BIN/cmake" --target unilag_bench_portable 2>&1 | tail -5
+  cp "$OUT_BIN/cmake/unilag_bench_portable" "$OUT_BIN/"
+  # the CUDA runtime it links travels with it (the GPU machine's may not be on its library path)
+  cp -L "$(ldd "$OUT_BIN/unilag_bench_portable" | awk '/libcudart/ {print $3}')" "$OUT_BIN/"
+  # the CPU build's states after 20 steps, the reference of `run`
+  local cpu="$ROOT/build/release/apps/unilag_bench_portable"
+  [ -x "$cpu" ] || bash "$ROOT/scripts/build.sh" >/dev/null
+  OMP_NUM_THREADS=2 "$cpu" --dim 2 --sizes 128 --steps 20 --dump "$OUT_BIN/cpu2d.bin" >/dev/null
+  OMP_NUM_THREADS=2 "$cpu" --dim 3 --sizes 16 --steps 20 --dump "$OUT_BIN/cpu3d.bin" >/dev/null
+  log "built $OUT_BIN/unilag_bench_portable (CUDA $cuda, sm_80 code and PTX)"
+}
+
+patch_kokkos() {
+  local k="$1"
+  sed -i 's/^default_arch="sm_35"/default_arch="sm_80"/' "$k/bin/nvcc_wrapper"
+  sed -i '0,/^#if !(defined(KOKKOS_COMPILER_CLANG)/s//#if 0 \&\& !(defined(KOKKOS_COMPILER_CLANG)/' \
+    "$k/core/src/Cuda/Kokkos_Cuda_Half.hpp"
+  python3 - "$k/core/src/Cuda/Kokkos_CudaSpace.cpp" <<'PY'
+import sys
+path = sys.argv[1]
+text = open(path).read()
+old = """    CUDA_SAFE_CALL(cudaMemPrefetchAsync(ptr, bytes, space.cuda_device(),
+                                        space.cuda_stream()));"""
+new = """#if CUDA_VERSION >= 13000
+    CUDA_SAFE_CALL(cudaMemPrefetchAsync(ptr, bytes, cudaMemLocation{cudaMemLocationTypeDevice, space.cuda_device()},
+                                        0, space.cuda_stream()));
+#else
+""" + old + "\n#endif"
+assert old in text, "Kokkos_CudaSpace.cpp: the prefetch call to patch is not there"
+open(path, "w").write(text.replace(old, new))
+PY
+  # the PTX of sm_80 runs on any later GPU (the driver compiles it at start); Kokkos 3.4 asks for the same major
+  local same='if (compiled_major != cudaProp.major || compiled_minor > cudaProp.minor)'
+  local later='if (compiled_major > cudaProp.major ||'
+  later+=' (compiled_major == cudaProp.major \&\& compiled_minor > cudaProp.minor))'
+  sed -i "s/$same/$later/" "$k/core/src/Cuda/Kokkos_Cuda_Instance.cpp"
+  grep -q 'if (compiled_major > cudaProp.major' "$k/core/src/Cuda/Kokkos_Cuda_Instance.cpp" \
+    || { log "the Kokkos patch of the architecture check did not apply"; exit 1; }
+  grep -q '^default_arch="sm_80"' "$k/bin/nvcc_wrapper" \
+    && grep -q '^#if 0 && !(defined(KOKKOS_COMPILER_CLANG)' "$k/core/src/Cuda/Kokkos_Cuda_Half.hpp" \
+    || { log "a Kokkos patch did not apply"; exit 1; }
+}
+
+run() {
+  local out="$1" bin="$OUT_BIN/unilag_bench_portable" rc=0
+  export LD_LIBRARY_PATH="$OUT_BIN${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
+  mkdir -p "$out"
+  nvidia-smi --query-gpu=name,driver_version,clocks.sm,clocks.mem,memory.total --format=csv | tee "$out/gpu.txt"
+  # 1. Self-check and the comparison with the CPU build's state after 20 steps (dumps carried in build/gpu-bench).
+  "$bin" --dim 2 --sizes 128 --steps 20 --compare "$OUT_BIN/cpu2d.bin" || rc=1
+  "$bin" --dim 3 --sizes 16 --steps 20 --compare "$OUT_BIN/cpu3d.bin" || rc=1
+  # 2. Throughput against mesh size, numbered in order and shuffled.
+  "$bin" --dim 2 --sizes 128,256,512,1024,2048 --steps 5 --csv "$out/gpu2d.csv" || rc=1
+  "$bin" --dim 2 --sizes 512,2048 --steps 5 --shuffle --csv "$out/gpu2d_shuffled.csv" || rc=1
+  "$bin" --dim 3 --sizes 16,32,64,96 --steps 5 --csv "$out/gpu3d.csv" || rc=1
+  "$bin" --dim 3 --sizes 64 --steps 5 --shuffle --csv "$out/gpu3d_shuffled.csv" || rc=1
+  return $rc
+}
+
+case "${1:-}" in
+  build) build ;;
+  run) run "${2:?scripts/gpu-bench.sh run OUTDIR}" ;;
+  *) echo "usage: scripts/gpu-bench.sh build | run OUTDIR" >&2; exit 2 ;;
+esac
