@@ -209,8 +209,7 @@ template <int D, class P> class GprOperator
             return;
         {
             ScopedTimer timer(md_.timers, Phase::EntropyFilter);
-            limitedGradientsOf<D>(md_.m, entropy_filter::EpsQuantity<D>{md_.aux, md_.bc}, md_.geom, md_.read("x"),
-                                  md_.write("eps_gradient"), md_.bc, Limiter::None);
+            epsGradientFromFaces<D>(md_.m, md_.aux, md_.geom, md_.read("x"), md_.bc, md_.write("eps_gradient"));
         }
         halo("eps_gradient");
         {

@@ -55,7 +55,7 @@ template <int D, class P> void mechanics(Launchers& out)
     keep(out, &flagInadmissible<D, P>);
     keep(out, &limitedGradients<D, P>);
     keep(out, &filterEntropy<D, P>);
-    keep(out, &limitedGradientsOf<D, entropy_filter::EpsQuantity<D>>);
+    keep(out, &epsGradientFromFaces<D>);
     if constexpr (P::strain)
     {
         keep(out, &strainUpdate<D, P>);
