@@ -4,20 +4,22 @@
  *  backend. apps/CMakeLists.txt builds it for the CPU (OpenMP, as `unilag_bench_portable`), scripts/gpu-bench.sh
  *  for CUDA; the two runs are compared on the same meshes (docs/parallel.md, section 7).
  *
- *  Meshes: the unit square cut into N x N squares of two triangles each (diagonals alternating), or the unit cube
- *  into N^3 cubes of six tetrahedra (Kuhn's subdivision); interior nodes moved by up to 15% of the spacing (a fixed
- *  hash), every boundary a slip wall. `--shuffle` numbers cells and nodes at random, the worst case for caches and
- *  coalescing (a gmsh mesh lies between). State: the smooth flow of apps/bench_kernels.cpp.
+ *  Meshes (bench_portable_mesh.hpp): the unit square in N x N squares of two triangles, or the unit cube in N^3 cubes
+ *  of six tetrahedra, interior nodes moved by up to 15% of the spacing, every boundary a slip wall; `--shuffle`
+ *  numbers cells and nodes at random, the worst case for caches and coalescing (a gmsh mesh lies between). State:
+ *  the smooth flow of apps/bench_kernels.cpp, with the G_e and J of its variants for --physics other than hydro
+ *  (one Picard iteration per step, as `unilag_bench --benchmark_filter=variant_step` times them).
  *
- *    unilag_bench_portable [--dim 2|3] [--sizes N1,N2,..] [--shuffle] [--steps K] [--csv FILE]
- *                          [--dump FILE] [--compare FILE]
+ *    unilag_bench_portable [--dim 2|3] [--physics hydro|elastic|plastic|heat|plastic_heat] [--sizes N1,N2,..]
+ *                          [--shuffle] [--steps K] [--csv FILE] [--dump FILE] [--compare FILE]
  *
  *  For each N: K real steps first (CFL 0.5) with the self-check (positive volumes and sound speeds, total energy
  *  conserved to 1e-12 relative), then the timing of the phases of one step repeated from that state, median of the
- *  repeats: geometry, eos, nodal (nodal solve), update (move nodes + cell update), and gradients (the limited
- *  gradients of order 2). Throughput in cells/s of each phase and of the step (the first four). --dump writes the
- *  state after the K steps of the first size, --compare reads such a file (written by another backend) and prints
- *  the largest difference, relative to each field's largest magnitude. Exit 1 if a check fails.
+ *  repeats: geometry, eos (EOS and stress; heat fluxes), nodal (nodal solve), update (move nodes; G_e update; cell
+ *  update), and gradients (the limited gradients of order 2). Throughput in cells/s of each phase and of the step
+ *  (the first four). --dump writes the state after the K steps of the first size, --compare reads such a file
+ *  (written by another backend) and prints the largest difference, relative to each field's largest magnitude. Exit
+ *  1 if a check fails.
  */
 #include <algorithm>
 #include <chrono>
@@ -25,16 +27,16 @@
 #include <cstdint>
 #include <cstdio>
 #include <fstream>
-#include <numeric>
-#include <random>
+#include <limits>
 #include <stdexcept>
 #include <string>
 #include <vector>
 
 #include <Kokkos_Core.hpp>
 
-#include "mesh/FaceKey.hpp"
+#include "bench_portable_mesh.hpp"
 #include "unilag/CellUpdate.hpp"
+#include "unilag/Heat.hpp"
 #include "unilag/Hydro.hpp"
 #include "unilag/NodeMotion.hpp"
 #include "unilag/Reconstruction.hpp"
@@ -43,6 +45,7 @@ namespace
 {
 
 using namespace unilag;
+using namespace unilag::portable;
 using Clock = std::chrono::steady_clock;
 
 struct Options
@@ -51,179 +54,20 @@ struct Options
     std::vector<int> sizes;
     bool shuffle = false;
     int steps = 20;
-    std::string csv, dump, compare;
+    std::string physics = "hydro", csv, dump, compare;
 };
 
-//! A simplex mesh on the host: cell -> nodes (row-major, positively oriented), node coordinates.
-struct HostMesh
-{
-    int dim = 2, nv = 3;
-    std::vector<int> cells;
-    std::vector<double> coords; //!< dim per node
-    int nCells() const { return int(cells.size()) / nv; }
-    int nNodes() const { return int(coords.size()) / dim; }
-};
-
-//! A fixed hash of the node index in [-1, 1]: the same perturbation on every backend and machine.
-double hashUnit(std::uint64_t n, int salt)
-{
-    std::uint64_t z = n * 0x9E3779B97F4A7C15ull + std::uint64_t(salt) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-    z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-    z ^= z >> 31;
-    return double(z >> 11) / double(1ull << 52) - 1.0;
-}
-
-//! Signed measure of cell c (twice the area in 2D, six times the volume in 3D): only its sign is used.
-double orientation(const HostMesh& m, int c)
-{
-    const int* n = &m.cells[std::size_t(m.nv) * c];
-    auto x = [&](int k, int d) {
-        return m.coords[std::size_t(m.dim) * n[k] + d] - m.coords[std::size_t(m.dim) * n[0] + d];
-    };
-    if (m.dim == 2)
-        return x(1, 0) * x(2, 1) - x(1, 1) * x(2, 0);
-    return x(1, 0) * (x(2, 1) * x(3, 2) - x(2, 2) * x(3, 1)) - x(1, 1) * (x(2, 0) * x(3, 2) - x(2, 2) * x(3, 0)) +
-           x(1, 2) * (x(2, 0) * x(3, 1) - x(2, 1) * x(3, 0));
-}
-
-HostMesh generateMesh(int dim, int n, bool shuffle)
-{
-    HostMesh m;
-    m.dim = dim;
-    m.nv = dim + 1;
-    const int np = n + 1;
-    const int nodes = dim == 2 ? np * np : np * np * np;
-    auto id = [&](int i, int j, int k) { return i + np * (j + np * k); };
-    m.coords.resize(std::size_t(dim) * nodes);
-    for (int q = 0; q < nodes; ++q)
-    {
-        const int ijk[3] = {q % np, (q / np) % np, q / (np * np)};
-        for (int d = 0; d < dim; ++d)
-        {
-            const bool interior = ijk[d] > 0 && ijk[d] < n;
-            m.coords[std::size_t(dim) * q + d] = (ijk[d] + (interior ? 0.15 * hashUnit(q, d) : 0.0)) / n;
-        }
-    }
-    if (dim == 2)
-        for (int j = 0; j < n; ++j)
-            for (int i = 0; i < n; ++i)
-            {
-                const int a = id(i, j, 0), b = id(i + 1, j, 0), c = id(i + 1, j + 1, 0), d = id(i, j + 1, 0);
-                const bool flip = (i + j) % 2 != 0;
-                const int t[6] = {a, b, flip ? d : c, flip ? b : a, c, d};
-                m.cells.insert(m.cells.end(), t, t + 6);
-            }
-    else
-    {
-        const int perms[6][3] = {{0, 1, 2}, {0, 2, 1}, {1, 0, 2}, {1, 2, 0}, {2, 0, 1}, {2, 1, 0}};
-        for (int k = 0; k < n; ++k)
-            for (int j = 0; j < n; ++j)
-                for (int i = 0; i < n; ++i)
-                    for (const auto& p : perms) // the path from corner (0,0,0) to (1,1,1) along the axes p
-                    {
-                        int c[3] = {i, j, k};
-                        m.cells.push_back(id(c[0], c[1], c[2]));
-                        for (int s = 0; s < 3; ++s)
-                        {
-                            ++c[p[s]];
-                            m.cells.push_back(id(c[0], c[1], c[2]));
-                        }
-                    }
-    }
-    if (shuffle)
-    {
-        std::mt19937 rng(12345);
-        std::vector<int> cellOrder(m.nCells()), nodeOrder(nodes);
-        std::iota(cellOrder.begin(), cellOrder.end(), 0);
-        std::iota(nodeOrder.begin(), nodeOrder.end(), 0);
-        std::shuffle(cellOrder.begin(), cellOrder.end(), rng);
-        std::shuffle(nodeOrder.begin(), nodeOrder.end(), rng); // old node -> new node
-        HostMesh s = m;
-        for (int c = 0; c < m.nCells(); ++c)
-            for (int k = 0; k < m.nv; ++k)
-                s.cells[std::size_t(m.nv) * c + k] = nodeOrder[m.cells[std::size_t(m.nv) * cellOrder[c] + k]];
-        for (int q = 0; q < nodes; ++q)
-            for (int d = 0; d < dim; ++d)
-                s.coords[std::size_t(dim) * nodeOrder[q] + d] = m.coords[std::size_t(dim) * q + d];
-        m = std::move(s);
-    }
-    for (int c = 0; c < m.nCells(); ++c)
-        if (orientation(m, c) < 0.0)
-            std::swap(m.cells[std::size_t(m.nv) * c], m.cells[std::size_t(m.nv) * c + 1]);
-    return m;
-}
-
-//! Device copies of a host mesh as the kernels' MeshView: face neighbours, boundary faces (group 0) and the
-//! node -> corner lists (by cell, then corner), as src/mesh/DistributedMesh.cpp builds them on one rank.
-template <int D>
-MeshView<D> deviceMesh(const HostMesh& h)
-{
-    constexpr int NV = D + 1;
-    const int nc = h.nCells(), nn = h.nNodes();
-    Kokkos::View<LO**, Kokkos::LayoutLeft, MemSpace> cellNodes("portable::cellNodes", nc, NV);
-    View<int**> faceGroup("portable::cellFaceGroup", nc, NV);
-    View<LO**> neighbour("portable::cellNeighbour", nc, NV);
-    View<int*> nodeBoundary("portable::nodeBoundary", nn);
-    auto cn = Kokkos::create_mirror_view(cellNodes);
-    auto fg = Kokkos::create_mirror_view(faceGroup);
-    auto nb = Kokkos::create_mirror_view(neighbour);
-    auto bn = Kokkos::create_mirror_view(nodeBoundary);
-    Kokkos::deep_copy(fg, 0);
-    Kokkos::deep_copy(nb, -1);
-    Kokkos::deep_copy(bn, 0);
-    for (int c = 0; c < nc; ++c)
-        for (int k = 0; k < NV; ++k)
-            cn(c, k) = h.cells[std::size_t(NV) * c + k];
-    auto interior = [&](const FaceRef& a, const FaceRef& b) {
-        nb(a.cell, a.k) = b.cell;
-        nb(b.cell, b.k) = a.cell;
-        fg(a.cell, a.k) = fg(b.cell, b.k) = -1;
-    };
-    auto boundary = [&](const FaceRef& a) {
-        for (int k = 0; k < NV; ++k)
-            if (k != a.k)
-                bn(cn(a.cell, k)) = 1;
-    };
-    if (matchFaces(h.cells.data(), std::size_t(nc), NV, interior, boundary))
-        throw std::logic_error("generated mesh: a face of more than two cells");
-    std::vector<LO> offsets(nn + 1, 0), corners(std::size_t(nc) * NV);
-    for (int q : h.cells)
-        ++offsets[q + 1];
-    std::partial_sum(offsets.begin(), offsets.end(), offsets.begin());
-    std::vector<LO> pos(offsets.begin(), offsets.end() - 1);
-    for (LO q = 0; q < LO(h.cells.size()); ++q) // corners in increasing cell order: sorted as required
-        corners[pos[h.cells[q]]++] = q;
-    using HostArray = Kokkos::View<const LO*, Kokkos::HostSpace, Kokkos::MemoryUnmanaged>;
-    View<LO*> nodeCornerOffsets("portable::nodeCornerOffsets", nn + 1);
-    View<LO*> nodeCorners("portable::nodeCorners", corners.size());
-    Kokkos::deep_copy(nodeCornerOffsets, HostArray(offsets.data(), offsets.size()));
-    Kokkos::deep_copy(nodeCorners, HostArray(corners.data(), corners.size()));
-    Kokkos::deep_copy(cellNodes, cn);
-    Kokkos::deep_copy(faceGroup, fg);
-    Kokkos::deep_copy(neighbour, nb);
-    Kokkos::deep_copy(nodeBoundary, bn);
-    MeshView<D> m;
-    m.cellNodes = cellNodes;
-    m.nodeCornerOffsets = nodeCornerOffsets;
-    m.nodeCorners = nodeCorners;
-    m.cellFaceGroup = faceGroup;
-    m.cellNeighbour = neighbour;
-    m.nodeBoundary = nodeBoundary;
-    m.nOwnedCells = m.nCells = nc;
-    m.nOwnedNodes = m.nNodes = nn;
-    return m;
-}
-
-//! Everything a first-order hydro step needs on one mesh, the smooth flow of bench_kernels.cpp as its state.
-template <int D>
+//! Everything a first-order step of physics variant P needs on one mesh, the smooth flow of bench_kernels.cpp as its
+//! state (strain variants: G_e = (rho/rho0)^{2/3} I with a 1% anisotropic perturbation, so that sigma != 0 and the
+//! plastic variant yields in about half the cells; heat variants: a smooth J), slip walls, adiabatic.
+template <int D, class P>
 struct Problem
 {
-    using S = HydroState<D>;
+    using S = StateLayout<D, P>;
     MeshView<D> m;
-    Field state, stateNew, x, xNew, vnode, fnode, aux, grad;
+    Field state, stateNew, x, xNew, vnode, fnode, aux, grad, sigma, sigmaNew, heatRate;
     CellGeometry geom;
-    View<double*> mass;
+    View<double*> mass, plasticHint;
     View<int*> cellMaterial;
     View<Material*> materials;
     BoundaryView bc;
@@ -238,20 +82,28 @@ struct Problem
         xNew = Field("portable::xNew", nn, D);
         vnode = Field("portable::vnode", nn, D);
         fnode = Field("portable::fnode", nn, D);
-        aux = Field("portable::aux", nc, Aux::ncomp<PhysicsHydro>());
-        grad = Field("portable::grad", nc, ReconLayout<D, PhysicsHydro>::ncomp);
+        aux = Field("portable::aux", nc, Aux::ncomp<P>());
+        grad = Field("portable::grad", nc, ReconLayout<D, P>::ncomp);
+        if constexpr (P::strain)
+        {
+            sigma = Field("portable::sigma", nc, 6);
+            sigmaNew = Field("portable::sigmaNew", nc, 6);
+        }
+        if constexpr (P::heat)
+            heatRate = Field("portable::heatRate", nc, 1 + D);
         geom = CellGeometry(nc, D);
         mass = View<double*>("portable::mass", nc);
+        plasticHint = View<double*>("portable::plasticHint", nc);
         cellMaterial = View<int*>("portable::cellMaterial", nc);
         materials = View<Material*>("portable::materials", 1);
         auto matH = Kokkos::create_mirror_view(materials);
-        matH(0) = fluidMaterial(gpr::idealGasEos(1.4, 1.0));
+        matH(0) = material();
         Kokkos::deep_copy(materials, matH);
         View<int*> type("portable::bcType", 1);
         Kokkos::deep_copy(type, int(BcSlipWall));
         bc.type = type;
         bc.value = Kokkos::View<double* [3], MemSpace>("portable::bcValue", 1);
-        bc.thermal = View<int*>("portable::bcThermal", 1);
+        bc.thermal = View<int*>("portable::bcThermal", 1); // adiabatic
         bc.temperature = View<double*>("portable::bcTemperature", 1);
         auto xh = Kokkos::create_mirror_view(x);
         for (LO q = 0; q < nn; ++q)
@@ -261,7 +113,30 @@ struct Problem
         initialState(h);
     }
 
-    //! rho = 1 + 0.1 x, p = 1 + 0.5 sin(3x) cos(2y), v = 0.05 (sin(2y), -sin(2x)[, 0.5 sin(2x + y)]).
+    //! An ideal gas, with the variant's constitutive laws (apps/bench_kernels.cpp's VariantFixture).
+    static Material material()
+    {
+        Material mat = fluidMaterial(gpr::idealGasEos(1.4, 1.0));
+        if constexpr (P::strain)
+        {
+            mat.csh = 0.5;
+            mat.strainLaw = P::plastic ? StrainPlastic : StrainConstant;
+            mat.tau1 = gpr::infinity();
+            mat.tau10 = 1.0;
+            mat.sigmaY = 2e-3; // about the median von Mises stress of the perturbed G
+            mat.exponent = 10.0;
+        }
+        if constexpr (P::heat)
+        {
+            mat.heat = 1;
+            mat.alpha = 1.0;
+            mat.tau2 = 1e-3;
+            mat.theta0 = 1.0;
+        }
+        return mat;
+    }
+
+    //! rho = 1 + 0.1 x, p = 1 + 0.5 sin(3x) cos(2y), v = 0.05 (sin(2y), -sin(2x)[, 0.5 sin(2x + y)]), G_e, J.
     void initialState(const HostMesh& h)
     {
         if (!(computeGeometry<D>(m, x, geom, m.nCells) > 0.0))
@@ -269,7 +144,7 @@ struct Problem
         auto vol = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), geom.volume);
         auto sh = Kokkos::create_mirror_view(state);
         auto massH = Kokkos::create_mirror_view(mass);
-        const double gamma = 1.4;
+        Kokkos::deep_copy(sh, 0.0);
         for (LO i = 0; i < m.nCells; ++i)
         {
             double c[3] = {0, 0, 0};
@@ -280,31 +155,64 @@ struct Problem
             const double p = 1.0 + 0.5 * std::sin(3.0 * c[0]) * std::cos(2.0 * c[1]);
             const double v[3] = {0.05 * std::sin(2.0 * c[1]), -0.05 * std::sin(2.0 * c[0]),
                                  0.025 * std::sin(2.0 * c[0] + c[1])};
-            double kin = 0.0;
             for (int d = 0; d < D; ++d)
-            {
                 sh(i, S::vel + d) = v[d];
-                kin += 0.5 * v[d] * v[d];
-            }
             sh(i, S::omega) = 1.0 / rho;
-            sh(i, S::energy) = p / ((gamma - 1.0) * rho) + kin;
+            sh(i, S::energy) = p / (0.4 * rho); // internal energy; the EOS below adds kinetic and elastic energy
             massH(i) = rho * vol(i);
+            if constexpr (P::strain)
+            {
+                const double g = std::cbrt(rho * rho), e = 0.01 * std::sin(4.0 * c[0] + 3.0 * c[1]);
+                const double G[6] = {g * (1 + e), g * (1 - 0.5 * e), g * (1 - 0.5 * e), 0.5 * g * e, 0.0, 0.0};
+                for (int k = 0; k < 6; ++k)
+                    sh(i, S::G + k) = G[k];
+            }
+            if constexpr (P::heat)
+                for (int d = 0; d < D; ++d)
+                    sh(i, S::J + d) = 0.01 * std::cos(2.0 * c[d]);
         }
         Kokkos::deep_copy(state, sh);
         Kokkos::deep_copy(mass, massH);
+        addKineticAndElasticEnergy();
     }
 
-    // The phases of one step, each a call of the kernels a run makes (src/solver/GprOperator.hpp, order 1).
+    //! E = eps + |v|^2/2 + the shear energy of G_e (and J's): eps was stored in the energy column, and the EOS's eps
+    //! is E minus the rest.
+    void addKineticAndElasticEnergy()
+    {
+        eos(); // aux eps = stored value - kinetic - elastic, so the missing part is stored - aux eps
+        auto st = state;
+        auto ax = aux;
+        Kokkos::parallel_for(
+            "portable::total_energy_from_eps", range(m.nCells), KOKKOS_LAMBDA(const LO i) {
+                st(i, S::energy) += st(i, S::energy) - ax(i, Aux::eps);
+            });
+    }
+
+    // The phases of one step, each a call of the kernels a run makes (src/solver/GprOperator.hpp, order 1, one
+    // Picard iteration for the strain variants).
     void geometry() { computeGeometry<D>(m, x, geom, m.nCells); }
-    void eos() { computeEos<D>(state, cellMaterial, materials, aux, m.nCells); }
-    void nodal() { nodalSolve<D>(m, bc, state, aux, geom, vnode, fnode); }
+    void eos()
+    {
+        computeEos<D, P>(state, cellMaterial, materials, aux, m.nCells, sigma);
+        if constexpr (P::heat)
+            heatFluxes<D, P>(m, bc, state, aux, geom, cellMaterial, materials, heatRate);
+    }
+    void nodal() { nodalSolve<D, P>(m, bc, state, aux, geom, vnode, fnode, sigma); }
     double timeStep() { return stableTimeStep<D>(m, aux, geom, vnode, 0.5, 0.1); }
     UpdateCheck update(double dt)
     {
         moveNodes(x, vnode, dt, xNew, m.nNodes, D);
-        return updateCells<D>(m, state, aux, geom, mass, cellMaterial, materials, x, xNew, vnode, dt, stateNew);
+        if constexpr (P::strain)
+        {
+            Kokkos::deep_copy(plasticHint, std::numeric_limits<double>::quiet_NaN()); // a first Picard iterate
+            strainUpdate<D, P>(m, state, aux, geom, mass, cellMaterial, materials, xNew, vnode, dt, sigma, sigmaNew,
+                               stateNew, plasticHint);
+        }
+        return updateCells<D, P>(m, state, aux, geom, mass, cellMaterial, materials, x, xNew, vnode, dt, stateNew,
+                                 sigma, heatRate);
     }
-    void gradients() { limitedGradients<D, PhysicsHydro>(m, state, aux, ConstField(), geom, x, grad, bc); }
+    void gradients() { limitedGradients<D, P>(m, state, aux, sigma, geom, x, grad, bc); }
 
     //! Total energy sum_i m_i E_i (conserved to round-off: slip walls do no work).
     double totalEnergy() const
@@ -347,8 +255,8 @@ constexpr int kPhases = 5;
 const char* const kPhaseNames[kPhases] = {"geometry", "eos", "nodal", "update", "gradients"};
 
 //! Median over repeats of each phase's time (s), fenced on both sides; repeats until about 1 s has been spent.
-template <int D>
-std::vector<double> timePhases(Problem<D>& p)
+template <int D, class P>
+std::vector<double> timePhases(Problem<D, P>& p)
 {
     p.geometry();
     p.eos();
@@ -394,8 +302,8 @@ struct DumpHeader
     std::int32_t dim = 0, cells = 0, ncomp = 0, nodes = 0;
 };
 
-template <int D>
-void writeDump(const Problem<D>& p, const std::string& file)
+template <int D, class P>
+void writeDump(const Problem<D, P>& p, const std::string& file)
 {
     DumpHeader h;
     h.dim = D;
@@ -417,8 +325,8 @@ void writeDump(const Problem<D>& p, const std::string& file)
 
 //! Largest difference of each state component and of the coordinates against a dump, relative to the dump's
 //! largest magnitude of that column; returns the largest of them.
-template <int D>
-double compareDump(const Problem<D>& p, const std::string& file)
+template <int D, class P>
+double compareDump(const Problem<D, P>& p, const std::string& file)
 {
     std::ifstream in(file, std::ios::binary);
     DumpHeader h, want;
@@ -479,6 +387,8 @@ Options parse(int argc, char** argv)
         }
         else if (arg == "--shuffle")
             o.shuffle = true;
+        else if (arg == "--physics")
+            o.physics = next();
         else if (arg == "--steps")
             o.steps = std::stoi(next());
         else if (arg == "--csv")
@@ -499,7 +409,7 @@ Options parse(int argc, char** argv)
     return o;
 }
 
-template <int D>
+template <int D, class P>
 int run(const Options& o)
 {
     const std::string backend = ExecSpace::name();
@@ -508,15 +418,15 @@ int run(const Options& o)
     if (!o.csv.empty() && !csv)
         throw std::runtime_error(o.csv + ": cannot be written");
     if (csv)
-        std::fprintf(csv, "backend,concurrency,dim,n,shuffled,cells,nodes,geometry_s,eos_s,nodal_s,update_s,"
+        std::fprintf(csv, "backend,concurrency,physics,dim,n,shuffled,cells,nodes,geometry_s,eos_s,nodal_s,update_s,"
                           "gradients_s,step_cells_per_s\n");
     int status = 0;
     for (std::size_t s = 0; s < o.sizes.size(); ++s)
     {
         const int n = o.sizes[s];
-        Problem<D> p(generateMesh(D, n, o.shuffle));
-        std::printf("%s (concurrency %d), %dD, N = %d%s: %d cells, %d nodes\n", backend.c_str(), concurrency, D, n,
-                    o.shuffle ? " shuffled" : "", p.m.nCells, p.m.nNodes);
+        Problem<D, P> p(generateMesh(D, n, o.shuffle));
+        std::printf("%s (concurrency %d), %s, %dD, N = %d%s: %d cells, %d nodes\n", backend.c_str(), concurrency,
+                    o.physics.c_str(), D, n, o.shuffle ? " shuffled" : "", p.m.nCells, p.m.nNodes);
         p.evolve(o.steps);
         if (s == 0 && !o.dump.empty())
             writeDump(p, o.dump);
@@ -532,13 +442,31 @@ int run(const Options& o)
             std::printf(" %s %.2f", kPhaseNames[k], 1e-6 * p.m.nCells / t[k]);
         std::printf(" | step %.2f (%.1f ns per cell-step)\n", 1e-6 * p.m.nCells / step, 1e9 * step / p.m.nCells);
         if (csv)
-            std::fprintf(csv, "%s,%d,%d,%d,%d,%d,%d,%.6e,%.6e,%.6e,%.6e,%.6e,%.6e\n", backend.c_str(), concurrency, D,
-                         n, int(o.shuffle), p.m.nCells, p.m.nNodes, t[0], t[1], t[2], t[3], t[4], p.m.nCells / step);
+            std::fprintf(csv, "%s,%d,%s,%d,%d,%d,%d,%d,%.6e,%.6e,%.6e,%.6e,%.6e,%.6e\n", backend.c_str(), concurrency,
+                         o.physics.c_str(), D, n, int(o.shuffle), p.m.nCells, p.m.nNodes, t[0], t[1], t[2], t[3], t[4],
+                         p.m.nCells / step);
         std::fflush(stdout);
     }
     if (csv)
         std::fclose(csv);
     return status;
+}
+
+//! The physics variant named by --physics, as src/solver/RunVariant.hpp picks it from the materials.
+template <int D>
+int runPhysics(const Options& o)
+{
+    if (o.physics == "hydro")
+        return run<D, PhysicsHydro>(o);
+    if (o.physics == "elastic")
+        return run<D, Physics<true, false, false>>(o);
+    if (o.physics == "plastic")
+        return run<D, Physics<true, true, false>>(o);
+    if (o.physics == "heat")
+        return run<D, Physics<false, false, true>>(o);
+    if (o.physics == "plastic_heat")
+        return run<D, Physics<true, true, true>>(o);
+    throw std::invalid_argument("--physics must be one of hydro, elastic, plastic, heat, plastic_heat");
 }
 
 } // namespace
@@ -549,7 +477,7 @@ int main(int argc, char** argv)
     try
     {
         const Options o = parse(argc, argv);
-        return o.dim == 2 ? run<2>(o) : run<3>(o);
+        return o.dim == 2 ? runPhysics<2>(o) : runPhysics<3>(o);
     }
     catch (const std::exception& e)
     {

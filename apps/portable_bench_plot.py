@@ -1,7 +1,8 @@
 #!/usr/bin/env python3
-"""Step throughput against mesh size from unilag_bench_portable's CSVs (apps/bench_portable.cpp), one line per
-backend, dimension and numbering: `apps/portable_bench_plot.py OUT.csv IN.csv...` concatenates the inputs into
-OUT.csv and draws OUT.png (cells per second of the first-order step, and of the order-2 gradients dashed)."""
+"""Step throughput against mesh size from unilag_bench_portable's CSVs (apps/bench_portable.cpp):
+`apps/portable_bench_plot.py OUT.csv IN.csv...` concatenates the inputs into OUT.csv and draws OUT.png, the hydro
+rows, one line per backend, dimension and numbering (cells per second of the first-order step, and of the order-2
+gradients dashed)."""
 import csv
 import sys
 
@@ -23,6 +24,7 @@ def main(out, inputs):
         w.writeheader()
         w.writerows(rows)
     fig, ax = plt.subplots(figsize=(7.5, 5))
+    rows = [r for r in rows if r.get("physics", "hydro") == "hydro"]  # the variants: docs/parallel.md 7's table
     lines = sorted({(r["backend"], r["concurrency"], r["dim"], r["shuffled"]) for r in rows})
     for backend, conc, dim, shuffled in lines:
         sel = sorted((r for r in rows if (r["backend"], r["concurrency"], r["dim"], r["shuffled"]) ==

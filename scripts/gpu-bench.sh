@@ -3,10 +3,10 @@
 # scripts/setup.sh, with the nvcc on PATH), and runs it where a GPU is. docs/parallel.md 7 has the figures.
 #
 #   scripts/gpu-bench.sh build        Kokkos for CUDA (cached) and build/gpu-bench/unilag_bench_portable; needs
-#                                     scripts/setup.sh's source cache and an nvcc of CUDA 12 or 13, no GPU
-#   scripts/gpu-bench.sh run OUTDIR   on the GPU machine (carry build/gpu-bench): the self-check and the CPU
-#                                     reference comparison, then 2D and 3D, numbered in order and shuffled; CSVs
-#                                     and the log to OUTDIR
+#                                     scripts/setup.sh's source cache and nvcc (tested: CUDA 13.0), no GPU
+#   scripts/gpu-bench.sh run OUTDIR   on the GPU machine (carry build/gpu-bench): for each physics variant the
+#                                     self-check, the comparison with the CPU build and the throughput; then the
+#                                     hydro step's against mesh size, numbered in order and shuffled; CSVs to OUTDIR
 #   UNILAG_DEPS=/some/dir             the cache of scripts/setup.sh (default ~/.cache/unilag)
 #
 # Kokkos 3.4 predates CUDA 12 and 13 and Hopper: four patches, applied to a copy of its source, make it build
@@ -19,6 +19,7 @@ set -euo pipefail
 ROOT="$(cd "$(dirname "$0")/.." && pwd)"
 DEPS="${UNILAG_DEPS:-${XDG_CACHE_HOME:-$HOME/.cache}/unilag}"
 OUT_BIN="$ROOT/build/gpu-bench"
+PHYSICS="hydro elastic plastic heat plastic_heat"
 log() { printf '[gpu-bench] %s\n' "$*" >&2; }
 
 build() {
@@ -49,18 +50,21 @@ build() {
     echo "$id" > "$stamp"
   fi
   mkdir -p "$OUT_BIN"
-  cmake -S "$ROOT/tests/cuda" -B "$OUT_BIN/cmake" -G Ninja -DCMAKE_BUILD_TYPE=Release \
-    -DCMAKE_CXX_COMPILER="$src/bin/nvcc_wrapper" -DKokkos_ROOT="$prefix" > "$OUT_BIN/configure.log" 2>&1 \
-    || { tail -30 "$OUT_BIN/configure.log"; exit 1; }
-  cmake --build "$OUT_BIN/cmake" --target unilag_bench_portable 2>&1 | tail -5
-  cp "$OUT_BIN/cmake/unilag_bench_portable" "$OUT_BIN/"
+  cmake -S "$ROOT/tests/cuda" -B "$ROOT/build/gpu-bench-cmake" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+    -DCMAKE_CXX_COMPILER="$src/bin/nvcc_wrapper" -DKokkos_ROOT="$prefix" > "$ROOT/build/gpu-bench-cmake.log" 2>&1 \
+    || { tail -30 "$ROOT/build/gpu-bench-cmake.log"; exit 1; }
+  cmake --build "$ROOT/build/gpu-bench-cmake" --target unilag_bench_portable 2>&1 | tail -5
+  cp "$ROOT/build/gpu-bench-cmake/unilag_bench_portable" "$OUT_BIN/"
   # the CUDA runtime it links travels with it (the GPU machine's may not be on its library path)
   cp -L "$(ldd "$OUT_BIN/unilag_bench_portable" | awk '/libcudart/ {print $3}')" "$OUT_BIN/"
-  # the CPU build's states after 20 steps, the reference of `run`
-  local cpu="$ROOT/build/release/apps/unilag_bench_portable"
+  # the CPU build's states after 20 steps of each physics variant, the references of `run`
+  local cpu="$ROOT/build/release/apps/unilag_bench_portable" physics
   [ -x "$cpu" ] || bash "$ROOT/scripts/build.sh" >/dev/null
-  OMP_NUM_THREADS=2 "$cpu" --dim 2 --sizes 128 --steps 20 --dump "$OUT_BIN/cpu2d.bin" >/dev/null
-  OMP_NUM_THREADS=2 "$cpu" --dim 3 --sizes 16 --steps 20 --dump "$OUT_BIN/cpu3d.bin" >/dev/null
+  rm -f "$OUT_BIN"/cpu*.bin
+  for physics in $PHYSICS; do
+    OMP_NUM_THREADS=2 "$cpu" --dim 2 --physics "$physics" --sizes 64 --dump "$OUT_BIN/cpu2d_$physics.bin" >/dev/null
+    OMP_NUM_THREADS=2 "$cpu" --dim 3 --physics "$physics" --sizes 12 --dump "$OUT_BIN/cpu3d_$physics.bin" >/dev/null
+  done
   log "built $OUT_BIN/unilag_bench_portable (CUDA $cuda, sm_80 code and PTX)"
 }
 
@@ -100,10 +104,16 @@ run() {
   export LD_LIBRARY_PATH="$OUT_BIN${LD_LIBRARY_PATH:+:$LD_LIBRARY_PATH}"
   mkdir -p "$out"
   nvidia-smi --query-gpu=name,driver_version,clocks.sm,clocks.mem,memory.total --format=csv | tee "$out/gpu.txt"
-  # 1. Self-check and the comparison with the CPU build's state after 20 steps (dumps carried in build/gpu-bench).
-  "$bin" --dim 2 --sizes 128 --steps 20 --compare "$OUT_BIN/cpu2d.bin" || rc=1
-  "$bin" --dim 3 --sizes 16 --steps 20 --compare "$OUT_BIN/cpu3d.bin" || rc=1
-  # 2. Throughput against mesh size, numbered in order and shuffled.
+  local physics
+  # 1. Each physics variant: self-check, and the comparison with the CPU build's state after 20 steps (the dumps
+  #    travel in build/gpu-bench), then the throughput on a mesh that fills the GPU.
+  for physics in $PHYSICS; do
+    "$bin" --dim 2 --physics "$physics" --sizes 64 --compare "$OUT_BIN/cpu2d_$physics.bin" || rc=1
+    "$bin" --dim 3 --physics "$physics" --sizes 12 --compare "$OUT_BIN/cpu3d_$physics.bin" || rc=1
+    "$bin" --dim 2 --physics "$physics" --sizes 1024 --steps 5 --csv "$out/gpu2d_$physics.csv" || rc=1
+    "$bin" --dim 3 --physics "$physics" --sizes 64 --steps 5 --csv "$out/gpu3d_$physics.csv" || rc=1
+  done
+  # 2. The hydro step's throughput against mesh size, numbered in order and shuffled.
   "$bin" --dim 2 --sizes 128,256,512,1024,2048 --steps 5 --csv "$out/gpu2d.csv" || rc=1
   "$bin" --dim 2 --sizes 512,2048 --steps 5 --shuffle --csv "$out/gpu2d_shuffled.csv" || rc=1
   "$bin" --dim 3 --sizes 16,32,64,96 --steps 5 --csv "$out/gpu3d.csv" || rc=1
