@@ -40,6 +40,7 @@
 #include <Kokkos_Core.hpp>
 #include <Tpetra_Core.hpp>
 
+#include "bench_material.hpp"
 #include "config/Scene.hpp"
 #include "mesh/DistributedMesh.hpp"
 #include "mesh/GlobalMesh.hpp"
@@ -343,23 +344,7 @@ struct VariantFixture
         sigmaNew = Field("bench::sigmaNew", nc, 6);
         heatRate = Field("bench::heatRate", nc, 1 + D);
         plasticHint = View<double*>("bench::plasticHint", nc);
-        Material mat = fluidMaterial(gpr::idealGasEos(1.4, 1.0));
-        if constexpr (P::strain)
-        {
-            mat.csh = 0.5;
-            mat.strainLaw = P::plastic ? StrainPlastic : StrainConstant;
-            mat.tau1 = gpr::infinity(); // elastic
-            mat.tau10 = 1.0; // kdt ~ 6 dt (sigma_bar / sigma_Y)^10: a few percent of relaxation per step where it yields
-            mat.sigmaY = 2e-3; // about the median von Mises stress of the perturbed G
-            mat.exponent = 10.0;
-        }
-        if constexpr (P::heat)
-        {
-            mat.heat = 1;
-            mat.alpha = 1.0;
-            mat.tau2 = 1e-3;
-            mat.theta0 = 1.0;
-        }
+        const Material mat = bench::variantMaterial<P>();
         materials = View<Material*>("bench::vmaterials", 1);
         Kokkos::deep_copy(materials, mat);
         auto sh = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), f->state);

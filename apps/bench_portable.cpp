@@ -34,6 +34,7 @@
 
 #include <Kokkos_Core.hpp>
 
+#include "bench_material.hpp"
 #include "bench_portable_mesh.hpp"
 #include "unilag/CellUpdate.hpp"
 #include "unilag/Heat.hpp"
@@ -97,7 +98,7 @@ struct Problem
         cellMaterial = View<int*>("portable::cellMaterial", nc);
         materials = View<Material*>("portable::materials", 1);
         auto matH = Kokkos::create_mirror_view(materials);
-        matH(0) = material();
+        matH(0) = bench::variantMaterial<P>();
         Kokkos::deep_copy(materials, matH);
         View<int*> type("portable::bcType", 1);
         Kokkos::deep_copy(type, int(BcSlipWall));
@@ -111,29 +112,6 @@ struct Problem
                 xh(q, d) = h.coords[std::size_t(D) * q + d];
         Kokkos::deep_copy(x, xh);
         initialState(h);
-    }
-
-    //! An ideal gas, with the variant's constitutive laws (apps/bench_kernels.cpp's VariantFixture).
-    static Material material()
-    {
-        Material mat = fluidMaterial(gpr::idealGasEos(1.4, 1.0));
-        if constexpr (P::strain)
-        {
-            mat.csh = 0.5;
-            mat.strainLaw = P::plastic ? StrainPlastic : StrainConstant;
-            mat.tau1 = gpr::infinity();
-            mat.tau10 = 1.0;
-            mat.sigmaY = 2e-3; // about the median von Mises stress of the perturbed G
-            mat.exponent = 10.0;
-        }
-        if constexpr (P::heat)
-        {
-            mat.heat = 1;
-            mat.alpha = 1.0;
-            mat.tau2 = 1e-3;
-            mat.theta0 = 1.0;
-        }
-        return mat;
     }
 
     //! rho = 1 + 0.1 x, p = 1 + 0.5 sin(3x) cos(2y), v = 0.05 (sin(2y), -sin(2x)[, 0.5 sin(2x + y)]), G_e, J.
