@@ -7,6 +7,7 @@
 #   scripts/gpu-bench.sh run OUTDIR   on the GPU machine (carry build/gpu-bench): for each physics variant the
 #                                     self-check, the comparison with the CPU build and the throughput; then the
 #                                     hydro step's against mesh size, numbered in order and shuffled; CSVs to OUTDIR
+#   scripts/gpu-bench.sh resources    nvcc's registers and per-thread stack frame of each kernel (after build)
 #   UNILAG_DEPS=/some/dir             the cache of scripts/setup.sh (default ~/.cache/unilag)
 #
 # Kokkos 3.4 predates CUDA 12 and 13 and Hopper: four patches, applied to a copy of its source, make it build
@@ -121,8 +122,47 @@ run() {
   return $rc
 }
 
+# nvcc's resource report of every kernel of the benchmark (registers, per-thread stack frame: arrays indexed at run
+# time live there, in local memory; spills), one line per launcher, variant and dimension. No GPU needed.
+resources() {
+  local dir="$ROOT/build/gpu-bench-ptxas" src prefix
+  src=$(ls -d "$DEPS"/kokkos-cuda*-src | tail -1)
+  prefix=$(ls -d "$DEPS"/kokkos-3.4-cuda*-sm80 | tail -1)
+  [ -x "$src/bin/nvcc_wrapper" ] && [ -d "$prefix" ] || { log "run scripts/gpu-bench.sh build first"; exit 1; }
+  NVCC_WRAPPER_DEFAULT_COMPILER=g++ cmake -S "$ROOT/tests/cuda" -B "$dir" -G Ninja -DCMAKE_BUILD_TYPE=Release \
+    -DCMAKE_CXX_COMPILER="$src/bin/nvcc_wrapper" -DKokkos_ROOT="$prefix" -DCMAKE_CXX_FLAGS="-Xptxas=-v" >/dev/null
+  cmake --build "$dir" --target clean >/dev/null
+  NVCC_WRAPPER_DEFAULT_COMPILER=g++ cmake --build "$dir" --target unilag_bench_portable > "$dir.log" 2>&1
+  python3 - "$dir.log" <<'PY'
+import re, subprocess, sys
+rows, cur = [], None
+for line in open(sys.argv[1]):
+    m = re.search(r"Compiling entry function '(\S+)'", line)
+    if m:
+        cur = [m.group(1), 0, 0, 0]
+        rows.append(cur)
+    elif cur and (m := re.search(r"(\d+) bytes stack frame, (\d+) bytes spill stores", line)):
+        cur[2], cur[3] = int(m.group(1)), int(m.group(2))
+    elif cur and (m := re.search(r"Used (\d+) registers", line)):
+        cur[1] = int(m.group(1))
+names = subprocess.run(["c++filt"], input="\n".join(r[0] for r in rows), capture_output=True, text=True).stdout
+seen = set()
+for row, name in zip(rows, names.split("\n")):
+    m = re.search(r"unilag::(\w+)<(\d), unilag::Physics<(\w+), (\w+), (\w+)>", name)
+    if not m:
+        continue
+    kernel = "limitedGradients" if m.group(1) == "MechanicalQuantities" else m.group(1)  # named by its Q
+    tag = "%s %sD strain,plastic,heat=%s" % (kernel, m.group(2), "".join("1" if b == "true" else "0"
+                                                                         for b in m.groups()[2:]))
+    if tag not in seen:
+        seen.add(tag)
+        print("%-44s registers %3d  stack %5d B  spill %d B" % (tag, row[1], row[2], row[3]))
+PY
+}
+
 case "${1:-}" in
   build) build ;;
+  resources) resources ;;
   run) run "${2:?scripts/gpu-bench.sh run OUTDIR}" ;;
-  *) echo "usage: scripts/gpu-bench.sh build | run OUTDIR" >&2; exit 2 ;;
+  *) echo "usage: scripts/gpu-bench.sh build | run OUTDIR | resources" >&2; exit 2 ;;
 esac
