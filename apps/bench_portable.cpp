@@ -136,7 +136,7 @@ struct Problem
             for (int d = 0; d < D; ++d)
                 sh(i, S::vel + d) = v[d];
             sh(i, S::omega) = 1.0 / rho;
-            sh(i, S::energy) = p / (0.4 * rho); // internal energy; the EOS below adds kinetic and elastic energy
+            sh(i, S::energy) = p / (0.4 * rho); // eps of gamma 1.4 (bench_material.hpp); kinetic, elastic: below
             massH(i) = rho * vol(i);
             if constexpr (P::strain)
             {
