@@ -322,9 +322,8 @@ void benchStep(benchmark::State& state, double h)
     }
 }
 
-/*! The state of a physics variant on a base fixture's mesh: the same flow, plus G_e = (rho/rho0)^{2/3} I with a
- *  smooth 1% anisotropic perturbation (so sigma != 0 and, for the plastic variant, about half the cells are past
- *  the yield stress) and a smooth J. One ideal-gas material with the variant's constitutive laws. */
+/*! The state of a physics variant on a base fixture's mesh: the same flow, plus bench::setVariantState's G_e and J,
+ *  and bench::variantMaterial (bench_material.hpp). */
 template <int D, class P>
 struct VariantFixture
 {
@@ -358,16 +357,7 @@ struct VariantFixture
                     c[d] += xh(f->dm->cellNodesHost[(D + 1) * i + k], d) / (D + 1);
             for (int col = 0; col < 2 + D; ++col)
                 vh(i, col) = sh(i, col);
-            if constexpr (P::strain)
-            {
-                const double g = std::cbrt(std::pow(1.0 / sh(i, 0), 2.0)), e = 0.01 * std::sin(4.0 * c[0] + 3.0 * c[1]);
-                const double G[6] = {g * (1 + e), g * (1 - 0.5 * e), g * (1 - 0.5 * e), 0.5 * g * e, 0.0, 0.0};
-                for (int k = 0; k < 6; ++k)
-                    vh(i, S::G + k) = G[k];
-            }
-            if constexpr (P::heat)
-                for (int d = 0; d < D; ++d)
-                    vh(i, S::J + d) = 0.01 * std::cos(2.0 * c[d]);
+            bench::setVariantState<D, P>([&](int col) -> double& { return vh(i, col); }, 1.0 / sh(i, 0), c);
         }
         Kokkos::deep_copy(state, vh);
         computeEos<D, P>(state, f->cellMaterial, materials, aux, nc, sigma);

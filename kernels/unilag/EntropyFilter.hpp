@@ -21,8 +21,8 @@
  *   - Shocked cells, s_i > (1 + kappa) a_i with s the nodal solver's signal speed a + Gamma_D |dv| (Aux::signal),
  *     kappa = 0.5, neither give nor take: at the front the hotter cell of a pair is the one that ends up colder
  *     (docs/sedov.md, session 14), so a conduction there makes the scatter larger.
- *   - Conservative to round-off: R_f, rho_f, a_f and the antisymmetrised area vector (as the heat fluxes',
- *     Heat.hpp) are exact negatives from either side of a face; each cell adds only its own faces' fluxes (no
+ *   - Conservative to round-off: R_f, rho_f, a_f and the antisymmetrised area vector (sharedFaceArea, as the
+ *     heat fluxes') are exact negatives from either side of a face; each cell adds only its own faces' fluxes (no
  *     atomics), so the result is independent of the partition and the thread count, bit for bit.
  */
 #pragma once
@@ -191,12 +191,7 @@ void filterEntropy(const MeshView<D>& mesh, const Field& state, const ConstField
                 double residual = jump;
                 for (int a = 0; a < D; ++a)
                     residual -= 0.5 * (gradEps(i, a) + gradEps(j, a)) * (centroid(j, a) - centroid(i, a));
-                // the face's area vector antisymmetrised, (A_i - A_j)/2, m the face of j facing i (as Heat.hpp)
-                Vec<D> area = Vec<D>::zero();
-                for (int m = 0; m < NV; ++m)
-                    if (mesh.cellNeighbour(j, m) == i)
-                        for (int a = 0; a < D; ++a)
-                            area[a] = (0.5 * D) * (corner(j, m * D + a) - corner(i, k * D + a));
+                const Vec<D> area = sharedFaceArea<D>(mesh, corner, i, k, j);
                 const double rho = 0.5 * (1.0 / state(i, S::omega) + 1.0 / state(j, S::omega));
                 const double sound = fmax(aux(i, Aux::sound), aux(j, Aux::sound));
                 sum += rho * sound * norm(area) * entropy_filter::clipToJump(residual, jump);

@@ -268,14 +268,7 @@ struct Faces
             return;
         }
         const Side<D> b = second ? sideAt(j, xf) : side(j);
-        // antisymmetrised area vector (A_i - A_j)/2 = (D/2)(c_j,m - c_i,k), m the face of j facing i
-        for (int m = 0; m < NV; ++m)
-            if (mesh.cellNeighbour(j, m) == i)
-            {
-                for (int d = 0; d < D; ++d)
-                    A[d] = (0.5 * D) * (corner(j, m * D + d) - corner(i, k * D + d));
-                break;
-            }
+        A = sharedFaceArea<D>(mesh, corner, i, k, j);
         const double s = norm(A);
         if (!b.heat)
             adiabatic(a, A, s, fE, fJ);
