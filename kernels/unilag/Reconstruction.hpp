@@ -263,18 +263,17 @@ struct MechanicalQuantities
 };
 
 /*! One cell of the least-squares stencil, at offset d from the centroid with values wj (cell i's: wi): its term of
- *  A = sum w d d^T and of the right-hand sides of the fitted quantities, w = 1 / |d|^2, and (perVertex) the bounds of
+ *  A = sum w d d^T and of the right-hand sides of the fitted quantities, w = 1 / |d|^2, and (PerVertex) the bounds of
  *  the vertex it shares with cell i. */
-template <int D, int NQ>
+template <int D, int NQ, bool PerVertex>
 KOKKOS_INLINE_FUNCTION void addStencilCell(const Vec<D>& d, const double (&wj)[NQ], const double (&wi)[NQ], int nFit,
-                                           bool perVertex, Mat<D>& A, Vec<D> (&rhs)[NQ], double (&vmin)[NQ],
-                                           double (&vmax)[NQ])
+                                           Mat<D>& A, Vec<D> (&rhs)[NQ], double (&vmin)[NQ], double (&vmax)[NQ])
 {
     const double w = 1.0 / dot(d, d);
     A.addOuter(w, d);
     for (int q = 0; q < nFit; ++q)
         rhs[q] = rhs[q] + (w * (wj[q] - wi[q])) * d;
-    if (perVertex)
+    if constexpr (PerVertex)
         for (int q = 0; q < nFit; ++q)
         {
             vmin[q] = Kokkos::Experimental::fmin(vmin[q], wj[q]);
@@ -319,29 +318,47 @@ KOKKOS_INLINE_FUNCTION void addMirrorPlanes(const MeshView<D>& mesh, const Q& qu
  *  centroid, and a bound of the face's vertices (for the pressure: without the bound the limiter clips every monotone
  *  pressure profile at such a boundary to first order; without the fit Kidder's unlimited shell tangled on coarse
  *  meshes). */
+template <int D, class Q, bool PerVertex>
+void limitedGradientsKernel(const MeshView<D>& mesh, const Q& quantities, const CellGeometry& geom,
+                            const ConstField& x, const Field& grad, const BoundaryView& bc, Limiter limiter, int nFit);
+
 template <int D, class Q>
 void limitedGradientsOf(const MeshView<D>& mesh, const Q& quantities, const CellGeometry& geom, const ConstField& x,
                         const Field& grad, const BoundaryView& bc, Limiter limiter)
 {
-    constexpr int NV = D + 1;
-    constexpr int NQ = Q::nq;
-    constexpr int BQ = Q::bdata;
-    auto centroid = geom.centroid;
-    const bool hasBc = bc.type.extent(0) > 0;
     bool perVertex = false; // some quantity needs the extrema around each vertex
     int nFit = 0;           // quantities 0 .. nFit-1 are fitted; those after keep their cell values (Q's bounds)
-    for (int q = 0; q < NQ; ++q)
+    for (int q = 0; q < Q::nq; ++q)
     {
         perVertex = perVertex || quantities.bounds(limiter, q) == Bounds::Vertex;
         if (quantities.bounds(limiter, q) != Bounds::CellValue)
             nFit = q + 1;
     }
+    // Two kernels: without vertex bounds the per-vertex extrema arrays (NV x NQ x 2 doubles, in a GPU thread's local
+    // memory) are not there at all.
+    if (perVertex)
+        limitedGradientsKernel<D, Q, true>(mesh, quantities, geom, x, grad, bc, limiter, nFit);
+    else
+        limitedGradientsKernel<D, Q, false>(mesh, quantities, geom, x, grad, bc, limiter, nFit);
+}
+
+//! limitedGradientsOf's kernel; PerVertex: some quantity has Bounds::Vertex.
+template <int D, class Q, bool PerVertex>
+void limitedGradientsKernel(const MeshView<D>& mesh, const Q& quantities, const CellGeometry& geom,
+                            const ConstField& x, const Field& grad, const BoundaryView& bc, Limiter limiter, int nFit)
+{
+    constexpr int NV = D + 1;
+    constexpr int NQ = Q::nq;
+    constexpr int BQ = Q::bdata;
+    constexpr int NVB = PerVertex ? NV : 1; // vertices with their own extrema (none used without PerVertex)
+    auto centroid = geom.centroid;
+    const bool hasBc = bc.type.extent(0) > 0;
     const bool fitBQ = BQ < nFit;
     auto gradient = KOKKOS_LAMBDA(const LO i)
     {
         double wi[NQ], wj[NQ], wmin[NQ], wmax[NQ]; // wmin, wmax: over the cell and its face neighbours
         double pmin[NV], pmax[NV];                  // bounds of quantity BQ per vertex, with imposed boundary values
-        double vmin[NV][NQ], vmax[NV][NQ];          // VertexBased: over the cells around each vertex
+        double vmin[NVB][NQ], vmax[NVB][NQ];        // VertexBased: over the cells around each vertex
         Vec<D> rhs[NQ];
         quantities.values(i, wi);
         for (int q = 0; q < NQ; ++q)
@@ -359,10 +376,11 @@ void limitedGradientsOf(const MeshView<D>& mesh, const Q& quantities, const Cell
                 dx[k][a] = x(r, a) - xi[a];
         }
         Mat<D> A = Mat<D>::zero();
+        const int fitted = nFit; // captured here: nvcc refuses a lambda's first capture inside `if constexpr`
         for (int k = 0; k < NV; ++k)
         {
-            if (perVertex)
-                for (int q = 0; q < nFit; ++q)
+            if constexpr (PerVertex)
+                for (int q = 0; q < fitted; ++q)
                     vmin[k][q] = vmax[k][q] = wi[q];
             const LO r = mesh.cellNodes(i, k);
             Vec<D> plane[D];
@@ -379,7 +397,7 @@ void limitedGradientsOf(const MeshView<D>& mesh, const Q& quantities, const Cell
                 for (int a = 0; a < D; ++a)
                     d[a] = centroid(j, a) - xi[a];
                 quantities.values(j, wj);
-                addStencilCell<D, NQ>(d, wj, wi, nFit, perVertex, A, rhs, vmin[k], vmax[k]);
+                addStencilCell<D, NQ, PerVertex>(d, wj, wi, nFit, A, rhs, vmin[k % NVB], vmax[k % NVB]);
             }
             // A node on mirroring planes: the images of every cell around it (cell i's own included) across each
             // plane and their compositions join the stencil and the vertex's bounds, as the cells of the symmetric
@@ -406,7 +424,7 @@ void limitedGradientsOf(const MeshView<D>& mesh, const Q& quantities, const Cell
                         }
                     for (int a = 0; a < D; ++a)
                         d[a] += x(r, a) - xi[a];
-                    addStencilCell<D, NQ>(d, wj, wi, nFit, perVertex, A, rhs, vmin[k], vmax[k]);
+                    addStencilCell<D, NQ, PerVertex>(d, wj, wi, nFit, A, rhs, vmin[k % NVB], vmax[k % NVB]);
                 }
             }
         }
@@ -491,11 +509,12 @@ void limitedGradientsOf(const MeshView<D>& mesh, const Q& quantities, const Cell
             {
                 vhi[k] = q == BQ ? pmax[k] : wmax[q];
                 vlo[k] = q == BQ ? pmin[k] : wmin[q];
-                if (bounds == Bounds::Vertex)
-                {
-                    vhi[k] = Kokkos::Experimental::fmax(vhi[k], vmax[k][q]);
-                    vlo[k] = Kokkos::Experimental::fmin(vlo[k], vmin[k][q]);
-                }
+                if constexpr (PerVertex)
+                    if (bounds == Bounds::Vertex)
+                    {
+                        vhi[k] = Kokkos::Experimental::fmax(vhi[k], vmax[k][q]);
+                        vlo[k] = Kokkos::Experimental::fmin(vlo[k], vmin[k][q]);
+                    }
             }
             double phi = 1.0;
             for (int k = 0; k < NV && bounds != Bounds::Unlimited; ++k)
