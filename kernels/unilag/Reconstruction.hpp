@@ -309,6 +309,10 @@ KOKKOS_INLINE_FUNCTION void addMirrorPlanes(const MeshView<D>& mesh, const Q& qu
     }
 }
 
+template <int D, class Q, bool PerVertex>
+void limitedGradientsKernel(const MeshView<D>& mesh, const Q& quantities, const CellGeometry& geom,
+                            const ConstField& x, const Field& grad, const BoundaryView& bc, Limiter limiter, int nFit);
+
 /*! \brief Limited gradients of the owned cells (docs/gpr-model.md 2.5) of the quantities Q into grad (cells x
  *  Q::nq * D), from the cell values of all local cells (current for ghosts too) on the configuration x with geometry
  *  geom (centroids of all local cells). Limiter::None gives the plain least-squares gradients (exact for linear
@@ -318,10 +322,6 @@ KOKKOS_INLINE_FUNCTION void addMirrorPlanes(const MeshView<D>& mesh, const Q& qu
  *  centroid, and a bound of the face's vertices (for the pressure: without the bound the limiter clips every monotone
  *  pressure profile at such a boundary to first order; without the fit Kidder's unlimited shell tangled on coarse
  *  meshes). */
-template <int D, class Q, bool PerVertex>
-void limitedGradientsKernel(const MeshView<D>& mesh, const Q& quantities, const CellGeometry& geom,
-                            const ConstField& x, const Field& grad, const BoundaryView& bc, Limiter limiter, int nFit);
-
 template <int D, class Q>
 void limitedGradientsOf(const MeshView<D>& mesh, const Q& quantities, const CellGeometry& geom, const ConstField& x,
                         const Field& grad, const BoundaryView& bc, Limiter limiter)
