@@ -46,7 +46,10 @@ def front_radius(r, rho, vol, ring=0.004):
     starts = np.arange(0.9, 1.05, ring / 2)
     mean = np.array([(rho * vol)[k].sum() / vol[k].sum() if k.any() else 1.0
                      for k in ((r >= a) & (r < a + ring) for a in starts)])
-    i = np.where(mean > HALF_JUMP)[0].max()
+    above = np.where(mean[:-1] > HALF_JUMP)[0]
+    if above.size == 0 or mean[above.max() + 1] > HALF_JUMP:
+        raise ValueError(f"no shock front between r = {starts[0]:.2f} and {starts[-1]:.2f}: is the last output at t = 1?")
+    i = above.max()
     return starts[i] + ring / 2 + ring / 2 * (mean[i] - HALF_JUMP) / (mean[i] - mean[i + 1])
 
 
@@ -108,7 +111,10 @@ def main():
     table = {}
     for run in runs:
         dumps = sorted(glob.glob(f"{run}/unilag_*.h5"))
-        table[run] = a = analyse(dumps[-1], exact)
+        try:
+            table[run] = a = analyse(dumps[-1], exact)
+        except ValueError as e:
+            sys.exit(f"{dumps[-1]}: {e}")
         dirs = edge_directions(dumps[0])
         normals = [(d + 90) % 180 for d in dirs]  # theta where the front is parallel to that edge family
         parallel = sorted([t for t in normals if t <= 95] + [t - 180 for t in normals if t >= 175])

@@ -152,8 +152,8 @@ for row, name in zip(rows, names.split("\n")):
     if not m:
         continue
     kernel = "limitedGradients" if m.group(1) == "MechanicalQuantities" else m.group(1)  # named by its Q
-    if kernel == "limitedGradients" and "limitedGradientsKernel<" in name:  # its two kernels: with vertex bounds?
-        kernel += "+vertex" if re.search(r"MechanicalQuantities<\d, unilag::Physics<[^>]*> >, true>", name) else ""
+    if re.search(r"MechanicalQuantities<\d, unilag::Physics<[^>]*> >, true>", name):  # the one with vertex bounds
+        kernel += "+vertex"
     tag = "%s %sD strain,plastic,heat=%s" % (kernel, m.group(2), "".join("1" if b == "true" else "0"
                                                                          for b in m.groups()[2:]))
     if tag not in seen:
