@@ -151,7 +151,9 @@ for row, name in zip(rows, names.split("\n")):
     m = re.search(r"unilag::(\w+)<(\d), unilag::Physics<(\w+), (\w+), (\w+)>", name)
     if not m:
         continue
-    kernel = "limitedGradients" if m.group(1) == "MechanicalQuantities" else m.group(1)  # named by its Q
+    kernel = m.group(1)
+    if kernel == "MechanicalQuantities":  # the gradients' two kernels, named by their function
+        kernel = "nodeSums" if "unilag::nodeSums<" in name else "limitedGradients"
     if re.search(r"MechanicalQuantities<\d, unilag::Physics<[^>]*> >, true>", name):  # the one with vertex bounds
         kernel += "+vertex"
     tag = "%s %sD strain,plastic,heat=%s" % (kernel, m.group(2), "".join("1" if b == "true" else "0"

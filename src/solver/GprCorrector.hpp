@@ -44,7 +44,7 @@ template <int D, class P> void GprOperator<D, P>::stageState(double tStage)
     {
         ScopedTimer timer(md.timers, Phase::Reconstruction);
         limitedGradients<D, P>(md.m, sm, md.auxMid, md.sigmaMid, md.geomMid, xm, md.write("gradients"), md.bc,
-                               md.limiter, md.reconstruct, md.pressureLimiter);
+                               md.limiter, md.reconstruct, md.pressureLimiter, &md.gradientSums);
         if (fallbackMarked_)
             dropFlaggedGradients(md.write("gradients"), md.read("first_order"), md.m.nOwnedCells);
     }

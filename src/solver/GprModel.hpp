@@ -78,6 +78,7 @@ template <int D, class P> struct GprModel
     Field heatRateMid;          //!< order 2, heat: midpoint fluxes
     CellGeometry geom, geomNew; //!< at t^n; the next step's (owned cells, written by the update)
     CellGeometry geomMid;       //!< order 2: the midpoint configuration
+    GradientScratch gradientSums; //!< order 2: the least-squares node sums (LeastSquares.hpp), reused every call
     View<int*> cellMaterial;    //!< the material field as integers, for the kernels
     View<const Material*> materials;
     BoundaryView bc;

@@ -99,7 +99,7 @@ template <int D, class P> class GprOperator
             ScopedTimer timer(md_.timers, Phase::Reconstruction);
             limitedGradients<D, P>(md_.m, md_.read("state"), md_.aux, stressIterate(), md_.geom, md_.read("x"),
                                    md_.write("gradients_n"), md_.bc, md_.limiter,
-                                   md_.reconstruct, md_.pressureLimiter);
+                                   md_.reconstruct, md_.pressureLimiter, &md_.gradientSums);
             if (fallbackMarked_)
                 dropFlaggedGradients(md_.write("gradients_n"), md_.read("first_order"), md_.m.nOwnedCells);
         }
@@ -269,7 +269,7 @@ template <int D, class P> class GprOperator
         {
             ScopedTimer timer(md_.timers, Phase::Reconstruction);
             limitedGradientsOf<D>(md_.m, heat::Quantities<D, P>{state, aux, md_.bc}, geom, x, md_.write(name), md_.bc,
-                                  md_.limiter);
+                                  md_.limiter, &md_.gradientSums);
         }
         halo(name);
         return Reconstruction<D>{md_.read(name), x, geom.centroid, geom.volume, false};
