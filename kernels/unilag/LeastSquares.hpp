@@ -159,8 +159,10 @@ KOKKOS_INLINE_FUNCTION void addNodeTerm(const Vec<D>& e, const double (&wj)[NQ],
         for (int b = a; b < D; ++b)
             s[L::sym(a, b)] += w * e[a] * e[b];
     }
-    for (int q = 0; q < nFit; ++q)
+    for (int q = 0; q < NQ; ++q) // to NQ, not nFit: a compile-time trip count keeps s in registers on a GPU
     {
+        if (q >= nFit)
+            continue;
         const double wa = w * (wj[q] - ref[q]);
         double* t = s + L::q0 + q * L::perQ;
         t[1] += wa;
@@ -193,8 +195,10 @@ void nodeSums(const MeshView<D>& mesh, const Q& quantities, const CellGeometry& 
         const LO begin = mesh.nodeCornerOffsets(r), end = mesh.nodeCornerOffsets(r + 1);
         if (begin < end)
             quantities.values(mesh.nodeCorners(begin) / NV, ref);
-        for (int q = 0; q < fitted; ++q)
+        for (int q = 0; q < NQ; ++q)
         {
+            if (q >= fitted)
+                continue;
             s[L::q0 + q * L::perQ] = ref[q];
             if constexpr (PerVertex)
                 s[L::lo + q] = s[L::hi + q] = ref[q];
@@ -422,8 +426,10 @@ void gradientsFromNodeSums(const MeshView<D>& mesh, const Q& quantities, const C
                         A.a[b][a] += t;
                 }
             const Vec<D> s1e = s1 - s0 * e; // S1 - S0 e_i
-            for (int q = 0; q < fitted; ++q)
+            for (int q = 0; q < NQ; ++q)
             {
+                if (q >= fitted)
+                    continue;
                 const int t = L::q0 + q * L::perQ;
                 const double ai = wi[q] - sums(r, t), t0 = sums(r, t + 1);
                 for (int a = 0; a < D; ++a)
