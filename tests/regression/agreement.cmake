@@ -30,8 +30,10 @@ set(VARIANTS hydro elastic heat plastic plastic_heat filter)
 set(VARIANTS_2 ${VARIANTS})
 set(VARIANTS_3 ${VARIANTS} viscous_heat)
 # One run of the matrix: NAME = variant<dim>d_<variant>_o<order>_np<ranks>[_t<threads>] (order 1, 2 or ars), output
-# in ${WORK}/NAME,
-# fixtures variant<dim>d_<variant> (what its _agree test compares) and variants (all of them).
+# in ${WORK}/NAME, fixtures variant<dim>d_<variant> (what its _agree test compares) and variants (all of them).
+# Repartitioning stays on (the agreement then covers it too), without the measured rank speeds: on a loaded machine
+# with 3 ranks on 2 cores they were 16x apart in one CI run, the heat variant's repartitions left one rank only cells
+# the blast had not reached, and variant_physics failed.
 function(variant_run dim variant order np nt)
   set(name variant${dim}d_${variant}_o${order}_np${np})
   if(NOT nt EQUAL 1)
@@ -39,7 +41,7 @@ function(variant_run dim variant order np nt)
   endif()
   scheme_args(${order} scheme)
   add_test(NAME ${name} COMMAND ${MPI_RUN} ${np} ${UNILAG} run ${SCENES}/variants${dim}d.yaml --quiet --check
-           ${VARIANT_${variant}} ${scheme} --output ${WORK}/${name})
+           ${VARIANT_${variant}} ${scheme} --set parallel.rank_speeds=false --output ${WORK}/${name})
   set_tests_properties(${name} PROPERTIES ENVIRONMENT "OMP_NUM_THREADS=${nt}" PROCESSORS ${np}
                        FIXTURES_SETUP "variant${dim}d_${variant};variants" LABELS "gpr;mpi;regression")
 endfunction()
