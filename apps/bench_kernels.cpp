@@ -261,8 +261,10 @@ void benchReconstruction(benchmark::State& state, double h)
     if (!f)
         return;
     Field grad("bench::grad", f->m.nCells, ReconLayout<D, PhysicsHydro>::ncomp);
+    GradientScratch sums; // kept between calls, as the solver keeps it
     timed(state, [&] {
-        limitedGradients<D, PhysicsHydro>(f->m, f->state, f->aux, ConstField(), f->geom, f->x, grad);
+        limitedGradients<D, PhysicsHydro>(f->m, f->state, f->aux, ConstField(), f->geom, f->x, grad, BoundaryView(),
+                                          Limiter::BarthJespersen, Reconstructed::All, std::nullopt, &sums);
     });
     setCounters(state, *f->dm, false);
 }

@@ -66,6 +66,7 @@ struct Problem
     using S = StateLayout<D, P>;
     MeshView<D> m;
     Field state, stateNew, x, xNew, vnode, fnode, aux, grad, sigma, sigmaNew, heatRate;
+    GradientScratch gradientSums; //!< the node sums, kept between calls as the solver keeps them
     CellGeometry geom;
     View<double*> mass, plasticHint;
     View<int*> cellMaterial;
@@ -180,7 +181,11 @@ struct Problem
         return updateCells<D, P>(m, state, aux, geom, mass, cellMaterial, materials, x, xNew, vnode, dt, stateNew,
                                  sigma, heatRate);
     }
-    void gradients() { limitedGradients<D, P>(m, state, aux, sigma, geom, x, grad, bc); }
+    void gradients()
+    {
+        limitedGradients<D, P>(m, state, aux, sigma, geom, x, grad, bc, Limiter::BarthJespersen, Reconstructed::All,
+                               std::nullopt, &gradientSums);
+    }
 
     //! Total energy sum_i m_i E_i (conserved to round-off: slip walls do no work).
     double totalEnergy() const
