@@ -128,8 +128,39 @@ KOKKOS_INLINE_FUNCTION double shockSlope(const gpr::EosParams& e)
     return 1.0;
 }
 
+namespace impedance
+{
+/*! a_eff: the frozen speed a less the part of the shear that relaxes within a cell's acoustic time h / a (constant
+ *  tau1 only; nodalImpedance's comment). */
+KOKKOS_INLINE_FUNCTION double effectiveSpeed2(const Material& m, double a, double length, bool strain)
+{
+    double a2 = a * a;
+    if (strain && m.strainLaw == StrainConstant && a > 0.0)
+    {
+        // phi = 1 / (1 + h / (a tau1)): tau1 = +inf gives 1, tau1 = 0 gives 0, no inf / inf
+        const double phi = 1.0 / (1.0 + length / (a * m.tau1));
+        a2 = Kokkos::Experimental::fmax(a2 - (4.0 / 3.0) * m.csh * m.csh * (1.0 - phi), 0.0);
+    }
+    return a2;
+}
+
+//! Signal s = a_eff + shock term and impedance rho s of cell i.
+KOKKOS_INLINE_FUNCTION void store(const Field& aux, LO i, double rho, double a2, double shockTerm)
+{
+    double s = Kokkos::Experimental::sqrt(a2) + shockTerm;
+    // The shock term carries the round-off velocities ahead of a front into a cold gas, one cell per solve,
+    // decaying to subnormal numbers (1e-320), for which the entries of M lose their digits: a speed below
+    // 1e-100 (in any units no physical speed) is 0, and the node takes the cold gas's velocity (nodalSolve).
+    if (s < 1e-100)
+        s = 0.0;
+    aux(i, Aux::signal) = s;
+    aux(i, Aux::impedance) = rho * s;
+}
+} // namespace impedance
+
 /*! \brief The nodal solver's impedance z_i = rho_i (a_eff + Gamma_D |dv|_i) for cells [0, nCells), after
- *  computeEos, into Aux::impedance and its speed into Aux::signal (the time step's too); docs/cold-gas.md.
+ *  computeEos, into Aux::impedance, its speed into Aux::signal (the time step's too) and the shock term Gamma_D |dv|
+ *  into Aux::compression; docs/cold-gas.md.
  *   - Dukowicz's shock term Gamma_D |dv| keeps z > 0 where a vanishes (a cold gas, p = 0) and is the impedance of
  *     a strong shock: |dv|_i = max over the cell's corners of the compression -(v_r - v_i) . c_k / |c_k| (0 if
  *     none: rarefactions and shear keep rho a), v_r the node velocities of the last nodal solve (vnode: the
@@ -147,20 +178,10 @@ void nodalImpedance(const MeshView<D>& mesh, const ConstField& state, const View
     using S = StateLayout<D, P>;
     auto length = geom.length;
     auto corner = geom.corner;
-    auto impedance = KOKKOS_LAMBDA(const LO i)
+    auto kernel = KOKKOS_LAMBDA(const LO i)
     {
-        captureBeforeConstexpr(length);
         const Material& m = materials(cellMaterial(i));
-        const double rho = 1.0 / state(i, S::omega);
-        const double a = aux(i, Aux::sound);
-        double a2 = a * a;
-        if constexpr (P::strain)
-            if (m.strainLaw == StrainConstant && a > 0.0)
-            {
-                // phi = 1 / (1 + h / (a tau1)): tau1 = +inf gives 1, tau1 = 0 gives 0, no inf / inf
-                const double phi = 1.0 / (1.0 + length(i) / (a * m.tau1));
-                a2 = Kokkos::Experimental::fmax(a2 - (4.0 / 3.0) * m.csh * m.csh * (1.0 - phi), 0.0);
-            }
+        const double a2 = impedance::effectiveSpeed2(m, aux(i, Aux::sound), length(i), P::strain);
         // the compression rate of the corners: -(v_r - v_i) . c_k / |c_k|, c_k the outward corner vector
         double dv = 0.0;
         for (int k = 0; k < D + 1; ++k)
@@ -176,16 +197,29 @@ void nodalImpedance(const MeshView<D>& mesh, const ConstField& state, const View
             if (c2 > 0.0)
                 dv = Kokkos::Experimental::fmax(dv, w / Kokkos::Experimental::sqrt(c2));
         }
-        double s = Kokkos::Experimental::sqrt(a2) + shockSlope(m.eos) * dv;
-        // The shock term carries the round-off velocities ahead of a front into a cold gas, one cell per solve,
-        // decaying to subnormal numbers (1e-320), for which the entries of M lose their digits: a speed below
-        // 1e-100 (in any units no physical speed) is 0, and the node takes the cold gas's velocity (nodalSolve).
-        if (s < 1e-100)
-            s = 0.0;
-        aux(i, Aux::signal) = s;
-        aux(i, Aux::impedance) = rho * s;
+        const double shockTerm = shockSlope(m.eos) * dv;
+        aux(i, Aux::compression) = shockTerm;
+        impedance::store(aux, i, 1.0 / state(i, S::omega), a2, shockTerm);
     };
-    Kokkos::parallel_for("unilag::gpr::nodal_impedance", range(nCells), impedance);
+    Kokkos::parallel_for("unilag::gpr::nodal_impedance", range(nCells), kernel);
+}
+
+/*! nodalImpedance's signal and impedance for cells [0, nCells) after a change of the cells' internal energy alone
+ *  (the entropy filter: velocities, nodes and geometry as they were), with the shock term it stored: bit for bit
+ *  what nodalImpedance would give, without its loop over the corners. */
+template <int D, class P = PhysicsHydro>
+void renewImpedance(const ConstField& state, const View<const int*>& cellMaterial,
+                    const View<const Material*>& materials, const CellGeometry& geom, const Field& aux, LO nCells)
+{
+    using S = StateLayout<D, P>;
+    auto length = geom.length;
+    auto kernel = KOKKOS_LAMBDA(const LO i)
+    {
+        const Material& m = materials(cellMaterial(i));
+        const double a2 = impedance::effectiveSpeed2(m, aux(i, Aux::sound), length(i), P::strain);
+        impedance::store(aux, i, 1.0 / state(i, S::omega), a2, aux(i, Aux::compression));
+    };
+    Kokkos::parallel_for("unilag::gpr::renew_impedance", range(nCells), kernel);
 }
 
 //! Subcell matrix M_ik of corner k of a cell (without the impedance factor).

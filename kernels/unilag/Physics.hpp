@@ -52,13 +52,14 @@ struct Aux
 {
     enum : int // enumerators, not static members: device code may bind them to references (View indices)
     {
-        pressure = 0,  //!< EOS pressure p(rho, eps)
-        sound = 1,     //!< signal speed a = sqrt(c0^2 + 4/3 c_sh^2 + c_h^2) (docs/gpr-model.md 1.5)
-        impedance = 2, //!< z = rho s of the nodal solver, s the signal column (nodalImpedance)
-        eps = 3,       //!< specific internal energy eps = E - kinetic - elastic - thermal
-        theta = 4,     //!< temperature (heat only; 0 otherwise)
-        signal = 5,    //!< s = a_eff + Gamma_D |dv|: the nodal solver's and the time step's speed
-        stress = 6,    //!< shear stress sigma as Sym3, 6 columns (strain only)
+        pressure = 0,    //!< EOS pressure p(rho, eps)
+        sound = 1,       //!< signal speed a = sqrt(c0^2 + 4/3 c_sh^2 + c_h^2) (docs/gpr-model.md 1.5)
+        impedance = 2,   //!< z = rho s of the nodal solver, s the signal column (nodalImpedance)
+        eps = 3,         //!< specific internal energy eps = E - kinetic - elastic - thermal
+        theta = 4,       //!< temperature (heat only; 0 otherwise)
+        signal = 5,      //!< s = a_eff + Gamma_D |dv|: the nodal solver's and the time step's speed
+        compression = 6, //!< the shock term Gamma_D |dv| of s (nodalImpedance)
+        stress = 7,      //!< shear stress sigma as Sym3, 6 columns (strain only)
     };
     template <class P>
     static constexpr int ncomp()

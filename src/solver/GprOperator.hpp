@@ -51,6 +51,19 @@ template <int D, class P> class GprOperator
                              md_.m.nCells);
     }
 
+    /*! computeAux after a change of the cells' internal energy alone (the entropy filter): the EOS again, the
+     *  impedance from the shock term computeAux stored (renewImpedance: the same bits, no loop over corners). */
+    void renewAux()
+    {
+        ScopedTimer timer(md_.timers, Phase::Eos);
+        auto s = md_.read("state");
+        Field sigma;
+        if constexpr (P::strain)
+            sigma = md_.overwrite("sigma");
+        computeEos<D, P>(s, md_.cellMaterial, md_.materials, md_.aux, md_.m.nCells, sigma);
+        renewImpedance<D, P>(s, md_.cellMaterial, md_.materials, md_.geom, md_.aux, md_.m.nCells);
+    }
+
     //! Before the first step: the lagged node velocities of the first impedance (meanCellVelocityAtNodes). Collective.
     void initialNodeVelocities()
     {
@@ -202,8 +215,8 @@ template <int D, class P> class GprOperator
     }
 
     /*! The entropy filter over dt (scheme.entropy_filter; EntropyFilter.hpp, docs/gpr-model.md 2.7) on the state
-     *  that advance() left, with its ghosts and EOS (impedance against lagged) renewed. Collective; no-op at C = 0. */
-    void filterEntropy(double dt, const char* lagged)
+     *  that advance() left, with its ghosts, EOS and impedance renewed (renewAux). Collective; no-op at C = 0. */
+    void filterEntropy(double dt)
     {
         if (!(md_.scene.entropyFilter > 0.0))
             return;
@@ -218,7 +231,7 @@ template <int D, class P> class GprOperator
                                         md_.read("eps_gradient"), dt, md_.scene.entropyFilter);
         }
         halo("state");
-        computeAux(lagged);
+        renewAux();
     }
 
     //! The global extrema of a cell update's checks. Collective.

@@ -120,7 +120,7 @@ template <int D, class P> class GprSystem : public TimeSystem
         // ones: their extrapolation (weight beta - 1 < 0 on v0) made z at t^n differ from stage 1's at any dt by the
         // 3D Sedov deposit (R0 = 1300 R1), and the final row, weighing R0 by beta - 1, left a negative energy.
         op_.advance(lagged());
-        op_.filterEntropy(dt, lagged());
+        op_.filterEntropy(dt);
     }
 
     /*! New owners by the scene's partitioner (balancedOwners: Zoltan2 on the cells' current centroids, or the

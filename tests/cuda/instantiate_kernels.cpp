@@ -42,6 +42,7 @@ template <int D, class P> void mechanics(Launchers& out)
     keep(out, &computeGeometry<D>);
     keep(out, &computeEos<D, P>);
     keep(out, &nodalImpedance<D, P>);
+    keep(out, &renewImpedance<D, P>);
     keep(out, &nodalSolve<D, P>);
     keep(out, &stableTimeStep<D>);
     keep(out, &meanCellVelocityAtNodes<D, P>);

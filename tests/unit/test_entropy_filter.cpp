@@ -149,6 +149,38 @@ TEST(EntropyFilter, FitsLinearDifferencesOfAnyRank)
     }
 }
 
+/*! Where the first D directions span well, fitInSpan solves the normal equations directly (session 25): the same
+ *  weighted fit as the Gram-Schmidt path for any data, not only linear (random directions and values, 2D and 3D). */
+template <int D> void checkNormalEquations()
+{
+    std::mt19937 rng(11);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    int direct = 0;
+    for (int trial = 0; trial < 200; ++trial)
+    {
+        unilag::Vec<D> dirs[D + 1];
+        double w[D + 1];
+        for (int s = 0; s < D + 1; ++s)
+        {
+            for (int a = 0; a < D; ++a)
+                dirs[s][a] = u(rng);
+            w[s] = u(rng);
+        }
+        const int n = D + trial % 2; // D + 1 faces, or one face without a neighbour
+        if (!unilag::entropy_filter::spansWell<D>(dirs))
+            continue;
+        ++direct;
+        const auto fast = unilag::entropy_filter::fitInSpan<D>(dirs, w, n);
+        const auto gramSchmidt = unilag::entropy_filter::fitInSpanGramSchmidt<D>(dirs, w, n);
+        for (int a = 0; a < D; ++a)
+            EXPECT_NEAR(fast[a], gramSchmidt[a], 1e-12 * (1.0 + std::abs(gramSchmidt[a]))) << "trial " << trial;
+    }
+    EXPECT_GT(direct, 150); // random directions nearly always span well
+}
+
+TEST(EntropyFilter, NormalEquationsAreTheGramSchmidtFit2D) { checkNormalEquations<2>(); }
+TEST(EntropyFilter, NormalEquationsAreTheGramSchmidtFit3D) { checkNormalEquations<3>(); }
+
 /*! A random eps: the exchange conserves the energy to round-off, moves heat from hotter to colder cells only
  *  (sum_i m_i dE_i eps_i <= 0, each face's flux times the jump against it), changes most cells, and shocked cells
  *  (every fifth) keep their energy. */
