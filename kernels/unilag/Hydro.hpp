@@ -231,8 +231,7 @@ KOKKOS_INLINE_FUNCTION Mat<D> subcellMatrix(const Field& corner, LO i, int k)
     {
         if (j == k)
             continue;
-        const Vec<D> c = cornerVec<D>(corner, i, j);
-        M.addOuter(1.0 / norm(c), c);
+        M.addOuter(cornerInvNorm<D>(corner, i, j), cornerVec<D>(corner, i, j));
     }
     return M;
 }
