@@ -144,16 +144,19 @@ KOKKOS_INLINE_FUNCTION Vec<D> sharedFaceArea(const MeshView<D>& mesh, const Fiel
 template <int D>
 KOKKOS_INLINE_FUNCTION void storeGeometry(const CellGeometry& g, LO i, const Simplex<D>& s)
 {
-    g.volume(i) = s.volume;
-    g.length(i) = s.charLength();
-    for (int d = 0; d < D; ++d)
-        g.centroid(i, d) = s.centroid[d];
+    double sumNorms = 0.0; // charLength's sum, in its order: the same bits
     for (int k = 0; k < D + 1; ++k)
     {
+        const double cNorm = norm(s.c[k]);
+        sumNorms += cNorm;
         for (int d = 0; d < D; ++d)
             g.corner(i, k * D + d) = s.c[k][d];
-        g.corner(i, (D + 1) * D + k) = 1.0 / norm(s.c[k]);
+        g.corner(i, (D + 1) * D + k) = 1.0 / cNorm;
     }
+    g.volume(i) = s.volume;
+    g.length(i) = 2.0 * s.volume / sumNorms; // Simplex::charLength
+    for (int d = 0; d < D; ++d)
+        g.centroid(i, d) = s.centroid[d];
 }
 
 template <int D>

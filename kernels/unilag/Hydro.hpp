@@ -293,6 +293,7 @@ void nodalSolve(const MeshView<D>& mesh, const BoundaryView& bc, const ConstFiel
         Vec<D> slipNormal[MaxSlip];
         int nSlip = 0;
         int imposed = -1;
+        const bool boundaryNode = mesh.mayBeOnBoundary(r); // else no face at r has a group: skip their loop
         for (LO q = mesh.nodeCornerOffsets(r); q < mesh.nodeCornerOffsets(r + 1); ++q)
         {
             const LO cid = mesh.nodeCorners(q);
@@ -323,7 +324,7 @@ void nodalSolve(const MeshView<D>& mesh, const BoundaryView& bc, const ConstFiel
                 for (int e = 0; e < D; ++e)
                     Mcold.a[a][e] += rho * Mik.a[a][e];
             }
-            for (int j = 0; j < NV; ++j)
+            for (int j = 0; j < NV && boundaryNode; ++j)
             {
                 const int g = (j == k) ? -1 : mesh.cellFaceGroup(i, j);
                 if (g < 0)
