@@ -109,12 +109,11 @@ UpdateCheck applyUpdate(const MeshView<D>& mesh, const ConstField& state, const 
         double c2 = updatedSound2<D, P>(m, rhoNew, E, v, G, J);
         if (!(omega == omega))
             c2 = -Kokkos::reduction_identity<double>::min();
-        ext[0] = Kokkos::Experimental::fmin(ext[0], ratio);
-        ext[1] = Kokkos::Experimental::fmin(ext[1], c2);
-        ext[2] = Kokkos::Experimental::fmin(ext[2], -Kokkos::Experimental::fabs(mass(i) * omegaGcl - sNew.volume) /
-                                                        sNew.volume);
+        ext[0] = lesser(ext[0], ratio);
+        ext[1] = lesser(ext[1], c2);
+        ext[2] = lesser(ext[2], -Kokkos::Experimental::fabs(mass(i) * omegaGcl - sNew.volume) / sNew.volume);
         if (ratio <= 0.0 || c2 < 0.0)
-            ext[3] = Kokkos::Experimental::fmin(ext[3], double(i));
+            ext[3] = lesser(ext[3], double(i));
     };
     double ext[4];
     minReduce<4>("unilag::gpr::update_cells", mesh.nOwnedCells, update, ext);

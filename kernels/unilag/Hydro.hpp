@@ -529,7 +529,7 @@ PicardCheck strainUpdate(const MeshView<D>& mesh, const ConstField& state, const
         const gpr::Sym3 G0 = loadSym3(state, i, S::G);
         const double newVolume = cellVolumeAt<D>(mesh, xNew, i);
         const double ratio = newVolume / volume(i);
-        ext[1] = Kokkos::Experimental::fmin(ext[1], ratio);
+        ext[1] = lesser(ext[1], ratio);
         bool bad = !(ratio > 0.0);
         if (m.strainLaw == StrainNone || bad)
         {
@@ -563,10 +563,10 @@ PicardCheck strainUpdate(const MeshView<D>& mesh, const ConstField& state, const
             // admissible: G SPD (det and trace positive), finite stress
             const double dG = gpr::det(G);
             bad = !(dG > 0.0) || !(gpr::trace(G) > 0.0) || !(change == change);
-            ext[0] = Kokkos::Experimental::fmin(ext[0], bad ? -1e300 : -change);
+            ext[0] = lesser(ext[0], bad ? -1e300 : -change);
         }
         if (bad)
-            ext[2] = Kokkos::Experimental::fmin(ext[2], double(i));
+            ext[2] = lesser(ext[2], double(i));
     };
     double ext[3];
     minReduce<3>("unilag::gpr::strain_update", mesh.nOwnedCells, update, ext, P::plastic);

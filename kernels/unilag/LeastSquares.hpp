@@ -170,8 +170,8 @@ KOKKOS_INLINE_FUNCTION void addNodeTerm(const Vec<D>& e, const double (&wj)[NQ],
             t[2 + a] += wa * e[a];
         if constexpr (PerVertex)
         {
-            s[L::lo + q] = Kokkos::Experimental::fmin(s[L::lo + q], wj[q]);
-            s[L::hi + q] = Kokkos::Experimental::fmax(s[L::hi + q], wj[q]);
+            s[L::lo + q] = lesser(s[L::lo + q], wj[q]);
+            s[L::hi + q] = greater(s[L::hi + q], wj[q]);
         }
     }
 }
@@ -290,8 +290,8 @@ KOKKOS_INLINE_FUNCTION void limitCellGradients(const MeshView<D>& mesh, const Q&
         }
         for (int q = 0; q < nFit; ++q)
         {
-            wmin[q] = Kokkos::Experimental::fmin(wmin[q], wj[q]);
-            wmax[q] = Kokkos::Experimental::fmax(wmax[q], wj[q]);
+            wmin[q] = lesser(wmin[q], wj[q]);
+            wmax[q] = greater(wmax[q], wj[q]);
         }
     }
     for (int k = 0; k < NV; ++k)
@@ -318,8 +318,8 @@ KOKKOS_INLINE_FUNCTION void limitCellGradients(const MeshView<D>& mesh, const Q&
             for (int k = 0; k < NV; ++k) // the vertices of face f
                 if (k != f)
                 {
-                    pmin[k] = Kokkos::Experimental::fmin(pmin[k], pb);
-                    pmax[k] = Kokkos::Experimental::fmax(pmax[k], pb);
+                    pmin[k] = lesser(pmin[k], pb);
+                    pmax[k] = greater(pmax[k], pb);
                 }
         }
     // A = sum w d d^T is dimensionless (w = 1/|d|^2); a stencil that does not span D directions gives no gradient.
@@ -354,8 +354,8 @@ KOKKOS_INLINE_FUNCTION void limitCellGradients(const MeshView<D>& mesh, const Q&
             if constexpr (PerVertex)
                 if (bounds == Bounds::Vertex)
                 {
-                    vhi[k] = Kokkos::Experimental::fmax(vhi[k], vmax[k][q]);
-                    vlo[k] = Kokkos::Experimental::fmin(vlo[k], vmin[k][q]);
+                    vhi[k] = greater(vhi[k], vmax[k][q]);
+                    vlo[k] = lesser(vlo[k], vmin[k][q]);
                 }
         }
         double phi = 1.0;
@@ -370,14 +370,14 @@ KOKKOS_INLINE_FUNCTION void limitCellGradients(const MeshView<D>& mesh, const Q&
                 for (int m = 0; m < NV; ++m)
                     if (m != k)
                     {
-                        hi = Kokkos::Experimental::fmax(hi, vhi[m]);
-                        lo = Kokkos::Experimental::fmin(lo, vlo[m]);
+                        hi = greater(hi, vhi[m]);
+                        lo = lesser(lo, vlo[m]);
                     }
             }
             if (dw > 0.0)
-                phi = Kokkos::Experimental::fmin(phi, (hi - wi[q]) / dw);
+                phi = lesser(phi, (hi - wi[q]) / dw);
             else if (dw < 0.0)
-                phi = Kokkos::Experimental::fmin(phi, (lo - wi[q]) / dw);
+                phi = lesser(phi, (lo - wi[q]) / dw);
         }
         for (int a = 0; a < D; ++a)
             grad(i, q * D + a) = phi * g[a];

@@ -90,6 +90,12 @@ KOKKOS_INLINE_FUNCTION double norm(const Vec<D>& a)
     return Kokkos::Experimental::sqrt(dot(a, a));
 }
 
+/*! fmin / fmax as comparisons: on the host std::fmin is a call into libm (for its NaN rules), 7% of an order-2 step
+ *  when the limiter's bounds used it. Like fmin, a NaN b is passed over (a stays); a NaN a stays NaN (fmin would take
+ *  b), which only a state already lost can give. */
+KOKKOS_INLINE_FUNCTION double lesser(double a, double b) { return b < a ? b : a; }
+KOKKOS_INLINE_FUNCTION double greater(double a, double b) { return b > a ? b : a; }
+
 /*! \brief Orthonormal basis Q[0, returned) of the span of the n vectors u (Gram-Schmidt, in order): a vector whose
  *  part orthogonal to the earlier ones is below 1e-8 of its length adds nothing (parallel walls count once). Exact
  *  copies of orthogonal unit inputs for axis-aligned planes, so results there do not change by round-off. */
