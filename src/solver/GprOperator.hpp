@@ -41,14 +41,9 @@ template <int D, class P> class GprOperator
     void computeAux(const char* lagged = "v_node")
     {
         ScopedTimer timer(md_.timers, Phase::Eos);
-        auto s = md_.read("state");
-        Field sigma;
-        if constexpr (P::strain)
-            sigma = md_.overwrite("sigma");
-        computeEos<D, P>(s, md_.cellMaterial, md_.materials, md_.aux, md_.m.nCells, sigma);
         // z from the last nodal solve's node velocities (the previous step's): Dukowicz's shock term
-        nodalImpedance<D, P>(md_.m, s, md_.cellMaterial, md_.materials, md_.geom, md_.read(lagged), md_.aux,
-                             md_.m.nCells);
+        nodalImpedance<D, P>(md_.m, computeEosOfState(), md_.cellMaterial, md_.materials, md_.geom, md_.read(lagged),
+                             md_.aux, md_.m.nCells);
     }
 
     /*! computeAux after a change of the cells' internal energy alone (the entropy filter): the EOS again, the
@@ -56,12 +51,7 @@ template <int D, class P> class GprOperator
     void renewAux()
     {
         ScopedTimer timer(md_.timers, Phase::Eos);
-        auto s = md_.read("state");
-        Field sigma;
-        if constexpr (P::strain)
-            sigma = md_.overwrite("sigma");
-        computeEos<D, P>(s, md_.cellMaterial, md_.materials, md_.aux, md_.m.nCells, sigma);
-        renewImpedance<D, P>(s, md_.cellMaterial, md_.materials, md_.geom, md_.aux, md_.m.nCells);
+        renewImpedance<D, P>(computeEosOfState(), md_.cellMaterial, md_.materials, md_.geom, md_.aux, md_.m.nCells);
     }
 
     //! Before the first step: the lagged node velocities of the first impedance (meanCellVelocityAtNodes). Collective.
@@ -266,6 +256,17 @@ template <int D, class P> class GprOperator
     bool arsFinal(double dt, UpdateCheck& check, std::string& failure);
 
   private:
+    //! computeEos of the state (and sigma^n, strain variants) for all local cells; returns the state it read.
+    ConstField computeEosOfState()
+    {
+        auto s = md_.read("state");
+        Field sigma;
+        if constexpr (P::strain)
+            sigma = md_.overwrite("sigma");
+        computeEos<D, P>(s, md_.cellMaterial, md_.materials, md_.aux, md_.m.nCells, sigma);
+        return s;
+    }
+
     //! The stress iterate sigma (strain variants; none for the hydrodynamic variants).
     ConstField stressIterate()
     {
