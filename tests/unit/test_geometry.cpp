@@ -446,8 +446,12 @@ TYPED_TEST(SimplexTest, ComputeGeometryMatchesSimplexPerCell)
         EXPECT_DOUBLE_EQ(vol(i), s.volume) << "cell " << i;
         EXPECT_DOUBLE_EQ(len(i), s.charLength()) << "cell " << i;
         for (int k = 0; k <= D; ++k)
+        {
             for (int d = 0; d < D; ++d)
                 EXPECT_DOUBLE_EQ(cor(i, k * D + d), s.c[k][d]) << "cell " << i << " corner " << k;
+            // the subcell matrices' weight beside it (cornerInvNorm), the very bits 1 / |c_k| gives
+            EXPECT_EQ(cor(i, (D + 1) * D + k), 1.0 / unilag::norm(s.c[k])) << "cell " << i << " corner " << k;
+        }
     }
     EXPECT_GT(vmin, 0.0);
     EXPECT_EQ(vmin, expectedMin);
