@@ -187,15 +187,10 @@ void nodalImpedance(const MeshView<D>& mesh, const ConstField& state, const View
         for (int k = 0; k < D + 1; ++k)
         {
             const LO r = mesh.cellNodes(i, k);
-            double w = 0.0, c2 = 0.0;
+            double w = 0.0;
             for (int d = 0; d < D; ++d)
-            {
-                const double c = corner(i, k * D + d);
-                w -= (vnode(r, d) - state(i, S::vel + d)) * c;
-                c2 += c * c;
-            }
-            if (c2 > 0.0)
-                dv = Kokkos::Experimental::fmax(dv, w / Kokkos::Experimental::sqrt(c2));
+                w -= (vnode(r, d) - state(i, S::vel + d)) * corner(i, k * D + d);
+            dv = Kokkos::Experimental::fmax(dv, w * cornerInvNorm<D>(corner, i, k));
         }
         const double shockTerm = shockSlope(m.eos) * dv;
         aux(i, Aux::compression) = shockTerm;
