@@ -60,7 +60,7 @@ KOKKOS_INLINE_FUNCTION bool consistentLoad(const Reconstruction<D>& rec)
  *  |T_i| div T_i / (D + 1) with delta T_k the reconstruction's offset at node k. The kernels add it to their lumped
  *  terms, which thus stay bit for bit those of scheme.corner_load: lumped. */
 template <int D, class P>
-KOKKOS_INLINE_FUNCTION Vec<D> consistentLoadCorrection(const MeshView<D>& mesh, const Field& corner,
+KOKKOS_INLINE_FUNCTION Vec<D> consistentLoadCorrection(const MeshView<D>& mesh, const RowField& corner,
                                                        const Reconstruction<D>& rec, LO i, int k)
 {
     using R = ReconLayout<D, P>;
@@ -87,7 +87,7 @@ KOKKOS_INLINE_FUNCTION Vec<D> consistentLoadCorrection(const MeshView<D>& mesh, 
 
 //! The load of corner k (the comment above): lumped, plus the correction with scheme.corner_load: consistent.
 template <int D, class P>
-KOKKOS_INLINE_FUNCTION Vec<D> cornerLoad(const MeshView<D>& mesh, const Field& corner, const Reconstruction<D>& rec,
+KOKKOS_INLINE_FUNCTION Vec<D> cornerLoad(const MeshView<D>& mesh, const RowField& corner, const Reconstruction<D>& rec,
                                          LO i, int k, double pk, const gpr::Sym3& sk)
 {
     const Vec<D> ck = cornerVec<D>(corner, i, k);

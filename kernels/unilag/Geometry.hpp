@@ -103,7 +103,7 @@ struct CellGeometry
 {
     View<double*> volume;  //!< |T_i|
     View<double*> length;  //!< characteristic length h_i
-    Field corner;          //!< cell x (NV*D + NV): c_k component d in column k*D + d, then 1 / |c_k| (cornerInvNorm)
+    RowField corner;       //!< cell x (NV*D + NV): c_k component d in column k*D + d, then 1 / |c_k| (cornerInvNorm)
     Field centroid;        //!< cell x D: vertex mean
 
     CellGeometry() = default;
@@ -118,7 +118,7 @@ struct CellGeometry
  *  subcell matrices, which the nodal solve and the subcell forces read D + 1 times per cell and step (a square root
  *  and a division each, 15-20% of a first-order step when computed there). */
 template <int D>
-KOKKOS_INLINE_FUNCTION double cornerInvNorm(const Field& corner, LO i, int k)
+KOKKOS_INLINE_FUNCTION double cornerInvNorm(const RowField& corner, LO i, int k)
 {
     return corner(i, (D + 1) * D + k);
 }
@@ -127,7 +127,7 @@ KOKKOS_INLINE_FUNCTION double cornerInvNorm(const Field& corner, LO i, int k)
  *  A = -D c the cells' outward area vectors, (D/2)(c_j,m - c_i,k), m the face of j facing i. Exact negatives from
  *  either side in floating point, so face fluxes built on it conserve to round-off (heat fluxes, entropy filter). */
 template <int D>
-KOKKOS_INLINE_FUNCTION Vec<D> sharedFaceArea(const MeshView<D>& mesh, const Field& corner, LO i, int k, LO j)
+KOKKOS_INLINE_FUNCTION Vec<D> sharedFaceArea(const MeshView<D>& mesh, const RowField& corner, LO i, int k, LO j)
 {
     Vec<D> A = Vec<D>::zero();
     for (int m = 0; m < D + 1; ++m)
@@ -160,7 +160,7 @@ KOKKOS_INLINE_FUNCTION void storeGeometry(const CellGeometry& g, LO i, const Sim
 }
 
 template <int D>
-KOKKOS_INLINE_FUNCTION Vec<D> cornerVec(const Field& corner, LO i, int k)
+KOKKOS_INLINE_FUNCTION Vec<D> cornerVec(const RowField& corner, LO i, int k)
 {
     Vec<D> c;
     for (int d = 0; d < D; ++d)
@@ -202,7 +202,7 @@ template <int D> KOKKOS_INLINE_FUNCTION double cellVolumeAt(const MeshView<D>& m
  *  3x3 matrix (zero rows and columns beyond D). */
 template <int D>
 KOKKOS_INLINE_FUNCTION Mat<3> cellVelocityGradient(const MeshView<D>& mesh, const ConstField& vnode,
-                                                   const Field& corner, LO i, double inverseVolume)
+                                                   const RowField& corner, LO i, double inverseVolume)
 {
     Mat<3> L = Mat<3>::zero();
     for (int k = 0; k < D + 1; ++k)

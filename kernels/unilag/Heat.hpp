@@ -185,7 +185,7 @@ struct Faces
     MeshView<D> mesh;
     BoundaryView bc;
     ConstField state, aux;
-    Field corner;
+    RowField corner;
     View<const int*> cellMaterial;
     View<const Material*> materials;
     Reconstruction<D> rec; //!< order 2: Quantities' gradients (empty: cell values, first order)

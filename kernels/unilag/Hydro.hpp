@@ -219,7 +219,7 @@ void renewImpedance(const ConstField& state, const View<const int*>& cellMateria
 
 //! Subcell matrix M_ik of corner k of a cell (without the impedance factor).
 template <int D>
-KOKKOS_INLINE_FUNCTION Mat<D> subcellMatrix(const Field& corner, LO i, int k)
+KOKKOS_INLINE_FUNCTION Mat<D> subcellMatrix(const RowField& corner, LO i, int k)
 {
     Mat<D> M = Mat<D>::zero();
     for (int j = 0; j < D + 1; ++j)

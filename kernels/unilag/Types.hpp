@@ -22,6 +22,9 @@ using View = Kokkos::View<T, MemSpace>;
 //! entity x component field, the storage of a Tpetra::MultiVector
 using Field = Kokkos::View<double**, Kokkos::LayoutLeft, MemSpace>;
 using ConstField = Kokkos::View<const double**, Kokkos::LayoutLeft, MemSpace>;
+/*! entity x component field that kernels gather whole rows of (a cell's corner vectors, read by every node of the
+ *  cell): one row per cache line or two on the host (LayoutRight), columns on a GPU (its coalescing layout). */
+using RowField = Kokkos::View<double**, ExecSpace::array_layout, MemSpace>;
 
 template <class Policy = ExecSpace>
 inline Kokkos::RangePolicy<Policy> range(std::size_t n)
