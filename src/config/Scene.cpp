@@ -16,6 +16,7 @@
 
 #include "physics/Exact.hpp"
 #include "physics/Expression.hpp"
+#include "tube/RiemannExact.hpp"
 
 namespace unilag
 {
@@ -366,6 +367,39 @@ void readParallel(ConfigNode& root, Scene& s)
     p.rejectUnknown();
 }
 
+//! exact.left / exact.right / exact.position of `solution: riemann`; every material an ideal gas of one gamma.
+void readRiemann(ConfigNode& x, Scene& s)
+{
+    auto side = [&](const char* key)
+    {
+        ConfigNode w = x.sub(key);
+        RiemannSide r;
+        r.density = w.positive("density", 0.0, true);
+        r.velocity = w.number("velocity", 0.0, true);
+        r.pressure = w.positive("pressure", 0.0, true);
+        w.rejectUnknown();
+        return r;
+    };
+    s.riemannLeft = side("left");
+    s.riemannRight = side("right");
+    s.riemannPosition = x.number("position", 0.0);
+    for (const auto& [name, m] : s.materials)
+    {
+        if (m.eos != EosKind::IdealGas || m.gamma != s.materials.begin()->second.gamma)
+            x.fail("solution", "'riemann' is the exact solution of an ideal gas of one gamma; material '" + name +
+                                   "' is not one");
+        s.riemannGamma = m.gamma;
+    }
+    try
+    {
+        (void)riemannSolution(s);
+    }
+    catch (const std::runtime_error& e)
+    {
+        x.fail("right", "the two states create a vacuum: no exact solution of this kind");
+    }
+}
+
 //! exact: the exact solution and the --check bounds.
 void readExact(ConfigNode& root, Scene& s)
 {
@@ -374,7 +408,10 @@ void readExact(ConfigNode& root, Scene& s)
         x.option<ExactSolution>("solution", "none",
                                 {{"none", ExactSolution::None},
                                  {"sedov", ExactSolution::Sedov},
-                                 {"stationary", ExactSolution::Stationary}});
+                                 {"stationary", ExactSolution::Stationary},
+                                 {"riemann", ExactSolution::Riemann}});
+    if (s.exactSolution == ExactSolution::Riemann)
+        readRiemann(x, s);
     const bool sedov = s.exactSolution == ExactSolution::Sedov;
     s.exactTable = resolvePath(s.directory, x.text("table", "", sedov));
     if (sedov && !fs::exists(s.exactTable))
@@ -452,6 +489,13 @@ Scene readScene(const std::string& file, const std::vector<std::string>& overrid
     root.rejectUnknown();
     s.resolved = *top;
     return s;
+}
+
+tube::RiemannExact riemannSolution(const Scene& scene)
+{
+    const RiemannSide &l = scene.riemannLeft, &r = scene.riemannRight;
+    return tube::RiemannExact({l.density, l.velocity, l.pressure}, {r.density, r.velocity, r.pressure},
+                              scene.riemannGamma);
 }
 
 void writeScene(const Scene& scene, const std::string& file)

@@ -15,6 +15,8 @@
 #include <string>
 #include <vector>
 
+#include "tube/RiemannExact.hpp"
+
 #include <Teuchos_ParameterList.hpp>
 
 #include "config/Walker.hpp"
@@ -72,7 +74,14 @@ enum class ExactSolution
 {
     None,
     Sedov,
-    Stationary //!< the initial state is the solution at all times (the isentropic vortex): L2 errors at the end
+    Stationary, //!< the initial state is the solution at all times (the isentropic vortex): L2 errors at the end
+    Riemann     //!< a 1D Riemann problem along x in an ideal gas (Sod): L1(density) against the exact solution
+};
+
+//! One side of a Riemann problem (exact.left / exact.right): density, velocity along x, pressure.
+struct RiemannSide
+{
+    double density = 1.0, velocity = 0.0, pressure = 1.0;
 };
 
 struct MaterialSpec
@@ -181,6 +190,9 @@ struct Scene
     std::string exactTable;            //!< resolved path of a radial profile (csv)
     double exactShockRadius = 0.0;     //!< at exactTime
     double exactTime = 1.0;            //!< time of the tabulated profile (self-similar scaling to other times)
+    RiemannSide riemannLeft, riemannRight; //!< Riemann: the states left and right of x = riemannPosition at t = 0
+    double riemannPosition = 0.0;
+    double riemannGamma = 1.4; //!< Riemann: the ideal gas' gamma (every material's)
     double maxL1Density = 0.0;         //!< --check bound, 0 = none
     double shockRadiusTolerance = 0.0; //!< --check bound (relative), 0 = none
     std::map<std::string, double> boundaryRadius; //!< exact mean distance from the origin of a boundary group
@@ -194,6 +206,9 @@ struct Scene
 /*! \brief Read, override and validate a scene. Throws InputError.
  *  \param overrides "key.path=value" strings from --set (dots separate nested keys). */
 Scene readScene(const std::string& file, const std::vector<std::string>& overrides);
+
+//! The exact solution of the scene's Riemann problem (exact.solution: riemann). Throws std::runtime_error on vacuum.
+tube::RiemannExact riemannSolution(const Scene& scene);
 
 //! Write the resolved scene as YAML (a run writes it into its output folder, rank 0).
 void writeScene(const Scene& scene, const std::string& file);

@@ -108,8 +108,11 @@ template <int D, class P> std::string collapse(const GprModel<D, P>& md, double 
     return mpi::firstMessage(md.comm, local);
 }
 
-template <int D, class P>
-std::tuple<std::vector<double>, std::vector<double>, std::vector<double>> cellRadii(const GprModel<D, P>& md)
+/*! Per owned cell: position(centroid) (a radius, or x along a Riemann problem), density and volume, on the host.
+ *  (Diagnostics at the end of a run and at outputs, not per step.) */
+template <int D, class P, class Position>
+std::tuple<std::vector<double>, std::vector<double>, std::vector<double>> cellSamples(const GprModel<D, P>& md,
+                                                                                      Position position)
 {
     using S = StateLayout<D, P>;
     const auto& dm = *md.mesh;
@@ -123,11 +126,35 @@ std::tuple<std::vector<double>, std::vector<double>, std::vector<double>> cellRa
         for (int k = 0; k < D + 1; ++k)
             for (int d = 0; d < D; ++d)
                 c[d] += xh(dm.cellNodesHost[(D + 1) * i + k], d) / (D + 1);
-        r[i] = std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]);
+        r[i] = position(c);
         rho[i] = 1.0 / sh(i, S::omega);
         v[i] = vol(i);
     }
     return {r, rho, v};
+}
+
+template <int D, class P>
+std::tuple<std::vector<double>, std::vector<double>, std::vector<double>> cellRadii(const GprModel<D, P>& md)
+{
+    return cellSamples(md, [](const double(&c)[3]) { return std::sqrt(c[0] * c[0] + c[1] * c[1] + c[2] * c[2]); });
+}
+
+/*! Volume-weighted mean |rho - rho_exact(x, t)| over the domain for a Riemann problem along x (its discontinuity at
+ *  x0 at t = 0), the exact solution sampled at the cells' centroids. */
+template <int D, class P>
+double riemannL1Density(const GprModel<D, P>& md, const tube::RiemannExact& exact, double x0, double t)
+{
+    auto [x, rho, vol] = cellSamples(md, [](const double(&c)[3]) { return c[0]; });
+    double acc[2] = {0.0, 0.0};
+    for (std::size_t i = 0; i < x.size(); ++i)
+    {
+        const double exactRho = t > 0.0 ? exact.sample((x[i] - x0) / t).rho
+                                        : (x[i] < x0 ? md.scene.riemannLeft.density : md.scene.riemannRight.density);
+        acc[0] += vol[i] * std::abs(rho[i] - exactRho);
+        acc[1] += vol[i];
+    }
+    mpi::allSum(md.comm, acc);
+    return acc[0] / acc[1];
 }
 
 //! Mean distance from the origin of the nodes of each boundary group (shell radii: Kidder, beryllium shell).

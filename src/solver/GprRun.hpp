@@ -60,6 +60,8 @@ template <int D, class P> ExactErrors exactErrors(const GprModel<D, P>& md, doub
     e.exactShock = md.scene.exactShockRadius;
     if (md.scene.exactSolution == ExactSolution::Stationary)
         e.stationary = stationaryErrors(md);
+    if (md.scene.exactSolution == ExactSolution::Riemann)
+        e.l1 = riemannL1Density(md, riemannSolution(md.scene), md.scene.riemannPosition, t);
     if (md.scene.exactSolution != ExactSolution::Sedov)
         return e;
     // R(t) = R(t_table) (t / t_table)^alpha, alpha = 2 / (d + 2) (planar energy release in d dimensions); the
@@ -182,7 +184,9 @@ void writeSummary(const GprModel<D, P>& md, const GprSystem<D, P>& sys, const Ru
     s.number("boundary_work", b.work).number("wall_work", b.passiveWork).number("boundary_heat", b.heat);
     s.number("max_node_force_imbalance", b.maxImbalance).number("volume_identity_defect", volumeIdentityDefect(md));
     if (x.l1 >= 0.0)
-        s.number("l1_density_error", x.l1).number("shock_radius", x.shock).number("exact_shock_radius", x.exactShock);
+        s.number("l1_density_error", x.l1);
+    if (x.shock >= 0.0)
+        s.number("shock_radius", x.shock).number("exact_shock_radius", x.exactShock);
     if (x.stationary.specificVolume >= 0.0)
         s.object("l2_error", {{"specific_volume", jsonNumber(x.stationary.specificVolume)},
                               {"velocity", jsonNumber(x.stationary.velocity)},
@@ -206,7 +210,9 @@ void writeSummary(const GprModel<D, P>& md, const GprSystem<D, P>& sys, const Ru
     if (P::strain)
         std::printf("; Picard %.2f mean, %d max", picardMean, sys.picardMax());
     if (x.l1 >= 0.0)
-        std::printf("; L1(density) %.4g, shock radius %.4g", x.l1, x.shock);
+        std::printf("; L1(density) %.4g", x.l1);
+    if (x.shock >= 0.0)
+        std::printf(", shock radius %.4g", x.shock);
     if (x.stationary.specificVolume >= 0.0)
         std::printf("; L2 omega %.4g, v %.4g, E %.4g (h %.3g)", x.stationary.specificVolume, x.stationary.velocity,
                     x.stationary.energy, x.stationary.h);

@@ -127,6 +127,14 @@ add_test(NAME error_exact_short COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/
          "sedov2d.yaml: key 'exact.table': .*ends at position 1.200000, not past the shock \\(shock_radius 1.500000\\)"
          -- ${UNILAG} run ${SMALL_SEDOV} --set exact.shock_radius=1.5)
 
+# exact.solution: riemann (inputs/sod2d.yaml): states that create a vacuum, and a material that is not an ideal gas.
+add_test(NAME error_riemann_vacuum COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err_riemann_vacuum
+         "sod2d.yaml: key 'exact.right': the two states create a vacuum" -- ${UNILAG} run ${INPUTS}/sod2d.yaml
+         --set exact.right.velocity=20)
+add_test(NAME error_riemann_eos COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err_riemann_eos
+         "error_riemann_eos.yaml: key 'exact.solution': 'riemann' is the exact solution of an ideal gas of one gamma; material 'metal' is not one"
+         -- ${UNILAG} run ${SCENES}/error_riemann_eos.yaml)
+
 # Command-line errors: exit 2, one message, nothing written. (expect_error.sh appends --output OUTDIR.)
 add_test(NAME error_cli_unknown_option COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err_cli_option
          "unknown option '--chek' \\(see unilag --help\\)" -- ${UNILAG} run ${SMALL_SEDOV} --chek)
@@ -163,7 +171,7 @@ set_tests_properties(error_boundary_unknown error_boundary_missing error_region_
                      error_mpi_boundary_unknown error_exact_missing error_exact_row error_exact_order error_exact_columns
                      error_cli_unknown_option error_cli_no_scene error_cli_unknown_command error_cli_set_no_value
                      error_cli_set_unknown_key error_cli_output_proc error_cli_output_file error_mpi_cli_unknown_option
-                     error_deposit_outside error_output_write_failure stop_max_steps
+                     error_deposit_outside error_output_write_failure stop_max_steps error_riemann_vacuum error_riemann_eos
                      PROPERTIES LABELS regression)
 set_tests_properties(error_mpi_boundary_unknown error_mpi_cli_unknown_option error_mpi_output_write_failure
                      PROPERTIES LABELS "regression;mpi")
