@@ -215,4 +215,48 @@ KOKKOS_INLINE_FUNCTION Mat<3> cellVelocityGradient(const MeshView<D>& mesh, cons
     return L;
 }
 
+//! Largest eigenvalue of a symmetric 2x2 or 3x3 matrix (closed form; 3D: the trigonometric one of Smith, 1961).
+template <int D>
+KOKKOS_INLINE_FUNCTION double largestEigenvalue(const Mat<D>& A)
+{
+    if constexpr (D == 2)
+    {
+        const double mean = 0.5 * (A.a[0][0] + A.a[1][1]), half = 0.5 * (A.a[0][0] - A.a[1][1]);
+        return mean + Kokkos::Experimental::sqrt(half * half + A.a[0][1] * A.a[0][1]);
+    }
+    else
+    {
+        const double off = A.a[0][1] * A.a[0][1] + A.a[0][2] * A.a[0][2] + A.a[1][2] * A.a[1][2];
+        const double q = (A.a[0][0] + A.a[1][1] + A.a[2][2]) / 3.0;
+        const double d0 = A.a[0][0] - q, d1 = A.a[1][1] - q, d2 = A.a[2][2] - q;
+        const double p = Kokkos::Experimental::sqrt((d0 * d0 + d1 * d1 + d2 * d2 + 2.0 * off) / 6.0);
+        if (!(p > 0.0))
+            return q; // a multiple of the identity
+        // r = det((A - q I) / p) / 2, in [-1, 1] up to round-off
+        const double b01 = A.a[0][1] / p, b02 = A.a[0][2] / p, b12 = A.a[1][2] / p;
+        const double b0 = d0 / p, b1 = d1 / p, b2 = d2 / p;
+        double r = 0.5 * (b0 * (b1 * b2 - b12 * b12) - b01 * (b01 * b2 - b12 * b02) + b02 * (b01 * b12 - b1 * b02));
+        r = r < -1.0 ? -1.0 : (r > 1.0 ? 1.0 : r);
+        return q + 2.0 * p * Kokkos::Experimental::cos(Kokkos::Experimental::acos(r) / 3.0);
+    }
+}
+
+/*! \brief The time step's length of cell i: the insphere diameter 2|T|/sum_k |c_k| (Simplex::charLength), or the
+ *  relaxation length 4|T| / lambda_max(sum_k M_ik) where that is smaller (docs/gpr-model.md 1.5).
+ *  With the nodes held, the subcell forces relax the cell's velocity at the rate lambda = z lambda_max(sum_k M_ik) / m
+ *  (sum_k M_ik = D sum_j c_j c_j^T / |c_j|), and an explicit step is stable for lambda dt <= 2. On a regular simplex
+ *  lambda_max = sum_k |c_k|, so lambda dt = 2 CFL and the insphere diameter decides; on flat cells lambda_max reaches
+ *  D sum_k |c_k|: the split prisms and gmsh's tetrahedra have cells at 2.3-2.9 times, where a CFL of 0.5 gave
+ *  lambda dt = 2.3 and the midpoint step's order 2 let one cell's velocity run away at a contact (Sod on tetrahedra,
+ *  docs/sod.md). The relaxation length keeps lambda dt <= 4 CFL (2 at the scenes' 0.5). */
+template <int D>
+KOKKOS_INLINE_FUNCTION double timeStepLength(const RowField& corner, LO i, double insphereDiameter, double volume)
+{
+    Mat<D> S = Mat<D>::zero();
+    for (int j = 0; j < D + 1; ++j)
+        S.addOuter(cornerInvNorm<D>(corner, i, j), cornerVec<D>(corner, i, j));
+    const double relaxation = 4.0 * volume / (D * largestEigenvalue<D>(S));
+    return relaxation < insphereDiameter ? relaxation : insphereDiameter;
+}
+
 } // namespace unilag

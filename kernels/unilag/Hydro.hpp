@@ -448,8 +448,8 @@ void nodalSolve(const MeshView<D>& mesh, const BoundaryView& bc, const ConstFiel
     Kokkos::parallel_for("unilag::gpr::nodal_solve", range(mesh.nOwnedNodes), solve_node);
 }
 
-/*! \brief Largest stable step over owned cells: CFL h_i / c_i and a bound on the relative volume change
- *  |dV/dt| dt / V <= maxVolumeChange. */
+/*! \brief Largest stable step over owned cells: CFL h_i / c_i (h_i: timeStepLength) and a bound on the relative
+ *  volume change |dV/dt| dt / V <= maxVolumeChange. */
 template <int D>
 double stableTimeStep(const MeshView<D>& mesh, const ConstField& aux, const CellGeometry& geom,
                       const ConstField& vnode, double cfl, double maxVolumeChange)
@@ -467,7 +467,7 @@ double stableTimeStep(const MeshView<D>& mesh, const ConstField& aux, const Cell
                 dvdt += corner(i, k * D + d) * vnode(r, d);
         }
         const double c = aux(i, Aux::signal); // the nodal solver's speed (nodalImpedance): a_eff + Gamma_D |dv|
-        double step = cfl * length(i) / (c > 0.0 ? c : 1e-300);
+        double step = cfl * timeStepLength<D>(corner, i, length(i), volume(i)) / (c > 0.0 ? c : 1e-300);
         const double rate = Kokkos::Experimental::fabs(dvdt) / volume(i);
         if (rate > 0.0 && maxVolumeChange / rate < step)
             step = maxVolumeChange / rate;

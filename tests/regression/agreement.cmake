@@ -113,10 +113,12 @@ add_test(NAME compare_runs_fails_steps COMMAND ${PYTHON} ${SCRIPTS}/compare_runs
          ${WORK}/variant2d_hydro_o2_np1)
 set_tests_properties(compare_runs_fails_steps PROPERTIES FIXTURES_REQUIRED variant2d_hydro
                      PASS_REGULAR_EXPRESSION "compare_runs: FAIL, summary.json 'steps': [0-9]+ in .* vs [0-9]+ in")
+# (heat and plastic + heat take the same 38 steps in 3D, so the comparison reaches the datasets: G and its
+# diagnostics are only in the second; heat and elastic took the same steps until the time step's relaxation length)
 add_test(NAME compare_runs_fails_datasets COMMAND ${PYTHON} ${SCRIPTS}/compare_runs.py 0 ${WORK}/variant3d_heat_o1_np1
-         ${WORK}/variant3d_elastic_o1_np1)
-set_tests_properties(compare_runs_fails_datasets PROPERTIES FIXTURES_REQUIRED "variant3d_heat;variant3d_elastic"
-                     PASS_REGULAR_EXPRESSION "compare_runs: FAIL, datasets differ: only in .*'temperature'.*'G'")
+         ${WORK}/variant3d_plastic_heat_o1_np1)
+set_tests_properties(compare_runs_fails_datasets PROPERTIES FIXTURES_REQUIRED "variant3d_heat;variant3d_plastic_heat"
+                     PASS_REGULAR_EXPRESSION "compare_runs: FAIL, datasets differ: only in .*: \\[\\], only in .*'G'")
 set_tests_properties(compare_runs_fails_fields compare_runs_fails_steps compare_runs_fails_datasets PROPERTIES
                      LABELS regression)
 # A scene pays only for the equations of the materials its regions use: the 2D hydro scene with an unused plastic,

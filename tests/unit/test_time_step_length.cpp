@@ -1,0 +1,125 @@
+// The time step's length (kernels/unilag/Geometry.hpp, timeStepLength; docs/gpr-model.md 1.5): the insphere
+// diameter, or the relaxation length 4|T| / lambda_max(sum_k M_ik) where that is smaller, so that the subcell
+// forces' relaxation of the cell velocity stays within lambda dt <= 4 CFL. Checked against the Jacobi
+// eigen-decomposition of the sum of the subcell matrices (Hydro.hpp) built here corner by corner.
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <random>
+
+#include "unilag/Hydro.hpp"
+#include "unilag/Sym3.hpp"
+
+namespace
+{
+
+using unilag::Mat;
+using unilag::Vec;
+
+template <int D> Vec<D> point(std::initializer_list<double> values)
+{
+    Vec<D> p;
+    int d = 0;
+    for (double v : values)
+        p[d++] = v;
+    return p;
+}
+
+// the cell's length and lambda_max(sum_k M_ik) / |T| (the relaxation rate per unit impedance and density)
+template <int D> std::pair<double, double> lengthAndRate(const Vec<D> (&x)[D + 1])
+{
+    const unilag::Simplex<D> s(x);
+    unilag::CellGeometry g(1, D);
+    unilag::storeGeometry<D>(g, 0, s);
+    const double h = unilag::timeStepLength<D>(g.corner, 0, g.length(0), g.volume(0));
+    Mat<D> sum = Mat<D>::zero();
+    for (int k = 0; k < D + 1; ++k)
+    {
+        const Mat<D> M = unilag::subcellMatrix<D>(g.corner, 0, k);
+        for (int a = 0; a < D; ++a)
+            for (int b = 0; b < D; ++b)
+                sum.a[a][b] += M.a[a][b];
+    }
+    unilag::gpr::Sym3 S{sum.a[0][0], sum.a[1][1], D == 3 ? sum.a[D - 1][D - 1] : 0.0, sum.a[0][1],
+                        D == 3 ? sum.a[0][D - 1] : 0.0, D == 3 ? sum.a[1][D - 1] : 0.0};
+    const double lambda = unilag::gpr::eigen(S).value[2];
+    return {h, lambda / s.volume};
+}
+
+} // namespace
+
+TEST(TimeStepLength, LargestEigenvalueIsJacobis)
+{
+    std::mt19937 rng(5);
+    std::uniform_real_distribution<double> u(-1.0, 1.0);
+    for (int n = 0; n < 2000; ++n)
+    {
+        // random, and with repeated eigenvalues (n % 3 == 1: a multiple of I plus a rank-one term; 2: of I)
+        Mat<3> A = Mat<3>::zero();
+        const Vec<3> w = point<3>({u(rng), u(rng), u(rng)});
+        for (int a = 0; a < 3; ++a)
+            for (int b = a; b < 3; ++b)
+                A.a[a][b] = A.a[b][a] = n % 3 == 0 ? u(rng) : (a == b ? 2.0 : 0.0) + (n % 3 == 1 ? w[a] * w[b] : 0.0);
+        const unilag::gpr::Sym3 S{A.a[0][0], A.a[1][1], A.a[2][2], A.a[0][1], A.a[0][2], A.a[1][2]};
+        const double scale = std::abs(A.a[0][0]) + std::abs(A.a[1][1]) + std::abs(A.a[2][2]) + 1.0;
+        EXPECT_NEAR(unilag::largestEigenvalue<3>(A), unilag::gpr::eigen(S).value[2], 1e-13 * scale) << n;
+        Mat<2> B = Mat<2>::zero();
+        B.a[0][0] = A.a[0][0];
+        B.a[1][1] = A.a[1][1];
+        B.a[0][1] = B.a[1][0] = A.a[0][1];
+        const unilag::gpr::Sym3 S2{A.a[0][0], A.a[1][1], -1e3, A.a[0][1], 0.0, 0.0};
+        EXPECT_NEAR(unilag::largestEigenvalue<2>(B), unilag::gpr::eigen(S2).value[2], 1e-13 * scale) << n;
+    }
+}
+
+// Every triangle's relaxation length is at least its insphere diameter (lambda_max <= 2 sum |c_k|): in 2D the
+// length is the insphere diameter, bit for bit, however flat the triangle.
+TEST(TimeStepLength, TrianglesKeepTheInsphereDiameter)
+{
+    std::mt19937 rng(7);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    for (int n = 0; n < 2000; ++n)
+    {
+        const double flat = std::pow(10.0, -4.0 * u(rng));
+        const Vec<2> x[3] = {point<2>({0.0, 0.0}), point<2>({1.0, 0.0}), point<2>({u(rng), flat * (0.01 + u(rng))})};
+        const unilag::Simplex<2> s(x);
+        EXPECT_EQ(lengthAndRate<2>(x).first, s.charLength()) << n;
+    }
+}
+
+TEST(TimeStepLength, RegularTetrahedronKeepsTheInsphereDiameter)
+{
+    const Vec<3> x[4] = {point<3>({1.0, -1.0, -1.0}), point<3>({1.0, 1.0, 1.0}), point<3>({-1.0, 1.0, -1.0}),
+                         point<3>({-1.0, -1.0, 1.0})};
+    const unilag::Simplex<3> s(x);
+    ASSERT_GT(s.volume, 0.0);
+    const auto [h, rate] = lengthAndRate<3>(x);
+    EXPECT_EQ(h, s.charLength());
+    EXPECT_NEAR(rate * h, 2.0, 1e-13); // lambda dt = 2 CFL on a regular cell
+}
+
+// Flat tetrahedra (gmsh's slivers, split prisms): the relaxation length decides, and it keeps lambda dt <= 4 CFL,
+// which the insphere diameter alone lets reach 6 CFL.
+TEST(TimeStepLength, FlatTetrahedraBoundTheRelaxationRate)
+{
+    std::mt19937 rng(9);
+    std::uniform_real_distribution<double> u(0.0, 1.0);
+    int bound = 0;
+    for (int n = 0; n < 2000; ++n)
+    {
+        const double flat = std::pow(10.0, -3.0 * u(rng));
+        const Vec<3> x[4] = {point<3>({0.0, 0.0, 0.0}), point<3>({1.0, 0.0, 0.0}),
+                             point<3>({u(rng), 0.2 + u(rng), 0.0}),
+                             point<3>({u(rng), u(rng), flat * (0.05 + u(rng))})};
+        const unilag::Simplex<3> s(x);
+        const auto [h, rate] = lengthAndRate<3>(x);
+        EXPECT_LE(h, s.charLength()) << n;
+        EXPECT_LE(rate * h, 4.0 * (1.0 + 1e-12)) << n;
+        if (h < s.charLength())
+        {
+            ++bound;
+            EXPECT_NEAR(rate * h, 4.0, 1e-11) << n;
+        }
+    }
+    EXPECT_GT(bound, 1000); // most of these shapes are flat enough to be bound
+}
