@@ -56,7 +56,7 @@ template <int D, class P> struct SubcellForces
 {
     MeshView<D> mesh;
     ConstField state, aux, stress; //!< flux state, its EOS and shear stress (strain)
-    RowField corner;                  //!< its corner vectors
+    RowField corner;               //!< its corner vectors
     Reconstruction<D> rec;         //!< inactive at first order
     ConstField vnode;
 

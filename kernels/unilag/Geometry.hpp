@@ -241,21 +241,31 @@ KOKKOS_INLINE_FUNCTION double largestEigenvalue(const Mat<D>& A)
     }
 }
 
-/*! \brief The time step's length of cell i: the insphere diameter 2|T|/sum_k |c_k| (Simplex::charLength), or the
- *  relaxation length 4|T| / lambda_max(sum_k M_ik) where that is smaller (docs/gpr-model.md 1.5).
- *  With the nodes held, the subcell forces relax the cell's velocity at the rate lambda = z lambda_max(sum_k M_ik) / m
- *  (sum_k M_ik = D sum_j c_j c_j^T / |c_j|), and an explicit step is stable for lambda dt <= 2. On a regular simplex
- *  lambda_max = sum_k |c_k|, so lambda dt = 2 CFL and the insphere diameter decides; on flat cells lambda_max reaches
- *  D sum_k |c_k|: the split prisms and gmsh's tetrahedra have cells at 2.3-2.9 times, where a CFL of 0.5 gave
- *  lambda dt = 2.3 and the midpoint step's order 2 let one cell's velocity run away at a contact (Sod on tetrahedra,
- *  docs/sod.md). The relaxation length keeps lambda dt <= 4 CFL (2 at the scenes' 0.5). */
+//! 4|T| / lambda_max(sum_k M_ik), sum_k M_ik = D sum_j c_j c_j^T / |c_j| (the subcell matrices of Hydro.hpp).
 template <int D>
-KOKKOS_INLINE_FUNCTION double timeStepLength(const RowField& corner, LO i, double insphereDiameter, double volume)
+KOKKOS_INLINE_FUNCTION double relaxationLength(const RowField& corner, LO i, double volume)
 {
     Mat<D> S = Mat<D>::zero();
     for (int j = 0; j < D + 1; ++j)
         S.addOuter(cornerInvNorm<D>(corner, i, j), cornerVec<D>(corner, i, j));
-    const double relaxation = 4.0 * volume / (D * largestEigenvalue<D>(S));
+    return 4.0 * volume / (D * largestEigenvalue<D>(S));
+}
+
+/*! \brief The time step's length of cell i: the insphere diameter 2|T|/sum_k |c_k| (Simplex::charLength), or the
+ *  relaxation length 4|T| / lambda_max(sum_k M_ik) where that is smaller (docs/gpr-model.md 1.5).
+ *  With the nodes held, the subcell forces relax the cell's velocity at the rate lambda = z lambda_max(sum_k M_ik) / m,
+ *  and an explicit step is stable for lambda dt <= 2. On a regular simplex lambda_max = sum_k |c_k|, so lambda dt =
+ *  2 CFL and the insphere diameter decides; on flat cells lambda_max reaches D sum_k |c_k|: split prisms and gmsh's
+ *  tetrahedra have cells at 2.3-2.9 times, where CFL 0.5 gave lambda dt = 2.3-2.9 and Sod went wrong at its contact
+ *  (docs/sod.md). The relaxation length keeps lambda dt <= 4 CFL (2 at the scenes' 0.5). A triangle never needs it:
+ *  lambda_max(sum_j c_j c_j^T / |c_j|) <= its trace sum_j |c_j|, so its relaxation length is at least the incircle
+ *  diameter (test TimeStepLength.TrianglesNeverNeedTheRelaxationLength), and 2D skips the eigenvalue. */
+template <int D>
+KOKKOS_INLINE_FUNCTION double timeStepLength(const RowField& corner, LO i, double insphereDiameter, double volume)
+{
+    if constexpr (D == 2)
+        return insphereDiameter;
+    const double relaxation = relaxationLength<D>(corner, i, volume);
     return relaxation < insphereDiameter ? relaxation : insphereDiameter;
 }
 

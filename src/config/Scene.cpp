@@ -394,7 +394,7 @@ void readRiemann(ConfigNode& x, Scene& s)
     {
         (void)riemannSolution(s);
     }
-    catch (const std::runtime_error& e)
+    catch (const std::runtime_error&)
     {
         x.fail("right", "the two states create a vacuum: no exact solution of this kind");
     }
