@@ -215,40 +215,49 @@ KOKKOS_INLINE_FUNCTION Mat<3> cellVelocityGradient(const MeshView<D>& mesh, cons
     return L;
 }
 
-//! Largest eigenvalue of a symmetric 2x2 or 3x3 matrix (closed form; 3D: the trigonometric one of Smith, 1961).
+//! S = sum_j c_j c_j^T / |c_j| of cell i: sum_k M_ik = D S (the subcell matrices of Hydro.hpp); trace S = sum_j |c_j|.
 template <int D>
-KOKKOS_INLINE_FUNCTION double largestEigenvalue(const Mat<D>& A)
-{
-    if constexpr (D == 2)
-    {
-        const double mean = 0.5 * (A.a[0][0] + A.a[1][1]), half = 0.5 * (A.a[0][0] - A.a[1][1]);
-        return mean + Kokkos::Experimental::sqrt(half * half + A.a[0][1] * A.a[0][1]);
-    }
-    else
-    {
-        const double off = A.a[0][1] * A.a[0][1] + A.a[0][2] * A.a[0][2] + A.a[1][2] * A.a[1][2];
-        const double q = (A.a[0][0] + A.a[1][1] + A.a[2][2]) / 3.0;
-        const double d0 = A.a[0][0] - q, d1 = A.a[1][1] - q, d2 = A.a[2][2] - q;
-        const double p = Kokkos::Experimental::sqrt((d0 * d0 + d1 * d1 + d2 * d2 + 2.0 * off) / 6.0);
-        if (!(p > 0.0))
-            return q; // a multiple of the identity
-        // r = det((A - q I) / p) / 2, in [-1, 1] up to round-off
-        const double b01 = A.a[0][1] / p, b02 = A.a[0][2] / p, b12 = A.a[1][2] / p;
-        const double b0 = d0 / p, b1 = d1 / p, b2 = d2 / p;
-        double r = 0.5 * (b0 * (b1 * b2 - b12 * b12) - b01 * (b01 * b2 - b12 * b02) + b02 * (b01 * b12 - b1 * b02));
-        r = r < -1.0 ? -1.0 : (r > 1.0 ? 1.0 : r);
-        return q + 2.0 * p * Kokkos::Experimental::cos(Kokkos::Experimental::acos(r) / 3.0);
-    }
-}
-
-//! 4|T| / lambda_max(sum_k M_ik), sum_k M_ik = D sum_j c_j c_j^T / |c_j| (the subcell matrices of Hydro.hpp).
-template <int D>
-KOKKOS_INLINE_FUNCTION double relaxationLength(const RowField& corner, LO i, double volume)
+KOKKOS_INLINE_FUNCTION Mat<D> summedCornerOuters(const RowField& corner, LO i)
 {
     Mat<D> S = Mat<D>::zero();
     for (int j = 0; j < D + 1; ++j)
         S.addOuter(cornerInvNorm<D>(corner, i, j), cornerVec<D>(corner, i, j));
-    return 4.0 * volume / (D * largestEigenvalue<D>(S));
+    return S;
+}
+
+/*! An upper bound of the largest eigenvalue of the symmetric positive semi-definite 3x3 matrix S that is exact to
+ *  round-off where that eigenvalue exceeds `floor`, or any value <= floor where it does not. Newton's method on the
+ *  characteristic polynomial from an upper bound (Wolkowicz-Styan's) descends monotonically onto lambda_max (all
+ *  roots real), and each iterate is an upper bound, so it stops as soon as one falls below floor: no libm calls. */
+KOKKOS_INLINE_FUNCTION double largestEigenvalueAbove(const Mat<3>& S, double floor)
+{
+    const double c2 = S.a[0][0] + S.a[1][1] + S.a[2][2];
+    const double c1 = S.a[0][0] * S.a[1][1] + S.a[0][0] * S.a[2][2] + S.a[1][1] * S.a[2][2] - S.a[0][1] * S.a[0][1] -
+                      S.a[0][2] * S.a[0][2] - S.a[1][2] * S.a[1][2];
+    const double c0 = S.a[0][0] * (S.a[1][1] * S.a[2][2] - S.a[1][2] * S.a[1][2]) -
+                      S.a[0][1] * (S.a[0][1] * S.a[2][2] - S.a[1][2] * S.a[0][2]) +
+                      S.a[0][2] * (S.a[0][1] * S.a[1][2] - S.a[1][1] * S.a[0][2]);
+    double frobenius2 = 0.0;
+    for (int a = 0; a < 3; ++a)
+        for (int b = 0; b < 3; ++b)
+            frobenius2 += S.a[a][b] * S.a[a][b];
+    // Wolkowicz-Styan: lambda_max <= m + sqrt(2) s with m = trace / 3, s^2 = |S|_F^2 / 3 - m^2 (tighter than |S|_F)
+    const double m = c2 / 3.0, s2 = frobenius2 / 3.0 - m * m;
+    double lambda = m + Kokkos::Experimental::sqrt(2.0 * (s2 > 0.0 ? s2 : 0.0));
+    if (lambda <= floor)
+        return floor;
+    for (int it = 0; it < 40 && lambda > floor; ++it)
+    {
+        const double p = ((lambda - c2) * lambda + c1) * lambda - c0;
+        const double slope = (3.0 * lambda - 2.0 * c2) * lambda + c1;
+        if (!(p > 0.0) || !(slope > 0.0))
+            break; // at lambda_max to round-off
+        const double next = lambda - p / slope;
+        if (!(next < lambda))
+            break;
+        lambda = next;
+    }
+    return lambda > floor ? lambda : floor;
 }
 
 /*! \brief The time step's length of cell i: the insphere diameter 2|T|/sum_k |c_k| (Simplex::charLength), or the
@@ -259,14 +268,23 @@ KOKKOS_INLINE_FUNCTION double relaxationLength(const RowField& corner, LO i, dou
  *  tetrahedra have cells at 2.3-2.9 times, where CFL 0.5 gave lambda dt = 2.3-2.9 and Sod went wrong at its contact
  *  (docs/sod.md). The relaxation length keeps lambda dt <= 4 CFL (2 at the scenes' 0.5). A triangle never needs it:
  *  lambda_max(sum_j c_j c_j^T / |c_j|) <= its trace sum_j |c_j|, so its relaxation length is at least the incircle
- *  diameter (test TimeStepLength.TrianglesNeverNeedTheRelaxationLength), and 2D skips the eigenvalue. */
+ *  diameter (test TimeStepLength.TrianglesNeverNeedTheRelaxationLength), and 2D takes the incircle diameter. */
 template <int D>
 KOKKOS_INLINE_FUNCTION double timeStepLength(const RowField& corner, LO i, double insphereDiameter, double volume)
 {
     if constexpr (D == 2)
         return insphereDiameter;
-    const double relaxation = relaxationLength<D>(corner, i, volume);
-    return relaxation < insphereDiameter ? relaxation : insphereDiameter;
+    else
+    {
+        // the relaxation length decides where lambda_max(S) > (2/3) trace S (sum_k M_ik = 3 S)
+        const Mat<3> S = summedCornerOuters<3>(corner, i);
+        const double floor = (2.0 / 3.0) * (S.a[0][0] + S.a[1][1] + S.a[2][2]);
+        const double lambda = largestEigenvalueAbove(S, floor);
+        if (!(lambda > floor))
+            return insphereDiameter;
+        const double relaxation = 4.0 * volume / (3.0 * lambda);
+        return relaxation < insphereDiameter ? relaxation : insphereDiameter;
+    }
 }
 
 } // namespace unilag
