@@ -220,6 +220,7 @@ void readRegions(ConfigNode& root, Scene& s)
             for (std::size_t d = 0; d < v.size(); ++d)
                 spec.velocity[d] = v[d];
         }
+        spec.average = r.option<bool>("sampling", "centroid", {{"centroid", false}, {"average", true}});
         r.rejectUnknown();
         s.regions[name] = spec;
     }

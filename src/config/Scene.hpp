@@ -115,6 +115,9 @@ struct RegionSpec
     bool hasPressure = true;
     std::array<Expr, 3> velocity;
     int velocityComponents = 0;
+    //! sampling: average: each cell takes the mean mass, momentum and energy of the expressions over points spread
+    //! through it (GprInitialState.hpp), not their values at its centroid; for data discontinuous inside cells
+    bool average = false;
 };
 
 struct BoundarySpec

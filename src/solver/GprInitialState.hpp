@@ -30,6 +30,57 @@ struct RegionFunctions
     std::unique_ptr<Expression> rho, thermo, velocity[3];
 };
 
+/*! Barycentric coordinates of the points a cell samples its region's data at with `sampling: average`: the centroids
+ *  of the corner sub-simplices of its regular subdivision into 4 parts per edge, (i_k + 1 / (D + 1)) / 4 with
+ *  sum_k i_k = 3: 10 points in 2D, 20 in 3D, spread evenly through the cell. */
+template <int D> std::vector<std::array<double, D + 1>> samplingPoints()
+{
+    constexpr int n = 4;
+    std::vector<std::array<double, D + 1>> points;
+    for (int a = 0; a < n; ++a)
+        for (int b = 0; a + b < n; ++b)
+            for (int c = 0; a + b + c < n && (D == 3 || c == 0); ++c)
+            {
+                const int idx[4] = {a, b, c, n - 1 - a - b - c};
+                std::array<double, D + 1> w;
+                for (int k = 0; k < D; ++k)
+                    w[k] = (idx[k] + 1.0 / (D + 1)) / n;
+                w[D] = (idx[3] + (D == 2 ? idx[2] : 0) + 1.0 / (D + 1)) / n;
+                points.push_back(w);
+            }
+    return points;
+}
+
+/*! The mean mass, momentum and total energy of the region's data over the sampling points of cell i, returned as
+ *  rho, eps and v (eps = E / m - |v|^2 / 2, at least the points' mean eps: a cold gas stays at 0 up to round-off). */
+template <int D, class Mesh, class Sample>
+void averageSample(const Mesh& dm, LO i, const std::vector<std::array<double, D + 1>>& points,
+                   Sample& sample, double& rho, double& eps, double (&v)[3])
+{
+    double mass = 0.0, energy = 0.0, momentum[3] = {0.0, 0.0, 0.0};
+    for (const auto& w : points)
+    {
+        double c[3] = {0.0, 0.0, 0.0};
+        for (int k = 0; k <= D; ++k)
+            for (int d = 0; d < D; ++d)
+                c[d] += w[k] * dm.coords0[3 * dm.cellNodesHost[(D + 1) * i + k] + d];
+        double rq, eq, vq[3];
+        sample(c, rq, eq, vq);
+        mass += rq;
+        energy += rq * (eq + 0.5 * (vq[0] * vq[0] + vq[1] * vq[1] + vq[2] * vq[2]));
+        for (int d = 0; d < 3; ++d)
+            momentum[d] += rq * vq[d];
+    }
+    rho = mass / double(points.size());
+    double kin = 0.0;
+    for (int d = 0; d < 3; ++d)
+    {
+        v[d] = momentum[d] / mass;
+        kin += 0.5 * v[d] * v[d];
+    }
+    eps = std::max(energy / mass - kin, 0.0);
+}
+
 /*! Writes the initial state of the cells of region r into the state, mass and material rows (host views).
  *  Returns an error naming the key and the cell, "" if fine. */
 template <int D, class P, class MatV, class SV, class MH, class VH>
@@ -45,29 +96,45 @@ std::string regionState(const GprModel<D, P>& md, std::size_t r, const MatV& mat
                "D, the velocity has " + std::to_string(spec.velocityComponents) + " components";
     const RegionFunctions f(spec);
     const int mat = int(std::distance(md.scene.materials.begin(), md.scene.materials.find(spec.material)));
+    const char* thKey = spec.hasPressure ? "pressure" : "specific_internal_energy";
+    const auto points = spec.average ? samplingPoints<D>() : std::vector<std::array<double, D + 1>>{};
     for (LO i = 0; i < dm.nCells; ++i)
     {
         if (dm.cellRegion[i] != int(r))
             continue;
-        double c[3];
-        initialCentroid<D>(dm, i, c);
-        const double rho = f.eval(spec.density, f.rho, c);
-        const double th = f.eval(spec.hasPressure ? spec.pressure : spec.internalEnergy, f.thermo, c);
-        const char* thKey = spec.hasPressure ? "pressure" : "specific_internal_energy";
-        if (!(rho > 0.0) || !std::isfinite(rho))
-            return md.scene.file + ": key '" + key + "density': value " + std::to_string(rho) + " at cell " +
-                   std::to_string(dm.cellGid[i]) + " is not positive";
-        if (!(th >= 0.0) || !std::isfinite(th))
-            return md.scene.file + ": key '" + key + thKey + "': value " + std::to_string(th) + " at cell " +
-                   std::to_string(dm.cellGid[i]) + " is negative";
+        // the data at one point: rho, the thermodynamic value (pressure or eps) and the velocity
+        std::string error;
+        auto sample = [&](const double (&c)[3], double& rho, double& eps, double (&v)[3])
+        {
+            rho = f.eval(spec.density, f.rho, c);
+            const double th = f.eval(spec.hasPressure ? spec.pressure : spec.internalEnergy, f.thermo, c);
+            if (!(rho > 0.0) || !std::isfinite(rho))
+                error = md.scene.file + ": key '" + key + "density': value " + std::to_string(rho) + " at cell " +
+                        std::to_string(dm.cellGid[i]) + " is not positive";
+            else if (!(th >= 0.0) || !std::isfinite(th))
+                error = md.scene.file + ": key '" + key + thKey + "': value " + std::to_string(th) + " at cell " +
+                        std::to_string(dm.cellGid[i]) + " is negative";
+            for (int d = 0; d < 3; ++d)
+                v[d] = d < spec.velocityComponents && d < D ? f.eval(spec.velocity[d], f.velocity[d], c) : 0.0;
+            eps = error.empty() && spec.hasPressure ? gpr::internalEnergy(mats(mat).eos, rho, th) : th;
+        };
+        double rho, eps, v[3];
+        if (!spec.average)
+        {
+            double c[3];
+            initialCentroid<D>(dm, i, c);
+            sample(c, rho, eps, v);
+        }
+        else
+            averageSample<D>(dm, i, points, sample, rho, eps, v);
+        if (!error.empty())
+            return error;
         double kin = 0.0;
         for (int d = 0; d < D; ++d)
         {
-            const double v = d < spec.velocityComponents ? f.eval(spec.velocity[d], f.velocity[d], c) : 0.0;
-            sh(i, S::vel + d) = v;
-            kin += 0.5 * v * v;
+            sh(i, S::vel + d) = v[d];
+            kin += 0.5 * v[d] * v[d];
         }
-        const double eps = spec.hasPressure ? gpr::internalEnergy(mats(mat).eos, rho, th) : th;
         sh(i, S::omega) = 1.0 / rho;
         sh(i, S::energy) = eps + kin;
         if constexpr (P::strain)
