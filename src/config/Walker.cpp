@@ -72,7 +72,7 @@ const Teuchos::ParameterList& emptyList()
     return empty;
 }
 
-//! Apply one "a.b.c=value" override; the value's type follows the entry it replaces, else is inferred.
+//! Apply one "a.b.c=value" override; a text entry stays text, a number is an integer only if written as one.
 void applyOverride(Teuchos::ParameterList& root, const std::string& file, const std::string& assignment)
 {
     const auto eq = assignment.find('=');
@@ -113,9 +113,9 @@ void applyOverride(Teuchos::ParameterList& root, const std::string& file, const 
         }
         list->set(key, arr);
     }
-    else if (list->isType<int>(key) || (!list->isParameter(key) && value.find_first_of(".eE") == std::string::npos))
-        list->set(key, int(std::lround(d)));
-    else
+    else if (value.find_first_of(".eE") == std::string::npos && std::abs(d) <= 2147483647.0 && d == std::trunc(d))
+        list->set(key, int(d));
+    else // typed by the value, not the entry it replaces: 0.002 over `interval: 0` must not become 0
         list->set(key, d);
 }
 
@@ -260,6 +260,9 @@ long ConfigNode::integer(const std::string& key, long def, long lo, long hi)
         v = e.getValue<int>(nullptr);
     else if (e.isType<long long>())
         v = long(e.getValue<long long>(nullptr));
+    else if (e.isType<double>() && std::abs(e.getValue<double>(nullptr)) < 1e18 &&
+             e.getValue<double>(nullptr) == std::trunc(e.getValue<double>(nullptr)))
+        v = long(e.getValue<double>(nullptr)); // 2.0 or 1e5 written for an integer
     else
         fail(key, "expected an integer, found " + entryText(e));
     if (v < lo || v > hi)

@@ -264,6 +264,22 @@ TEST(Scene, SetOverridesValues)
     EXPECT_PRED2(contains, range, "time.cfl");
 }
 
+TEST(Scene, SetTakesTheTypeOfItsValue)
+{
+    // `end: 1` and `interval: 0` are integers in the file; a fraction set over them must not be rounded (it was:
+    // --set output.interval=0.002 over interval 0 gave 0, and time.end=0.4 over end 1 gave 0)
+    TempDir dir;
+    std::string text = replaced(sedovScene(), "time: { end: 1.0, cfl: 0.5 }", "time: { end: 1, cfl: 0.5 }");
+    text = replaced(text, "interval: 0.1 }", "interval: 0 }");
+    const std::string file = dir.write("scene.yaml", text);
+    const unilag::Scene s = unilag::readScene(file, {"time.end=0.4", "output.interval=0.002", "scheme.order=2.0"});
+    EXPECT_DOUBLE_EQ(s.endTime, 0.4);
+    EXPECT_DOUBLE_EQ(s.outputInterval, 0.002);
+    EXPECT_EQ(s.order, 2); // an integer key takes 2.0
+    const std::string frac = inputError([&] { unilag::readScene(file, {"scheme.order=1.5"}); });
+    EXPECT_PRED2(contains, frac, "scheme.order");
+}
+
 TEST(Scene, GprDefaultsAreAnIdealFluid)
 {
     TempDir dir;
