@@ -74,7 +74,9 @@ template <int D, class P> struct SubcellForces
         const Vec<D> ck = cornerVec<D>(corner, i, k);
         const Vec<D> pressure = (-pk) * ck;
         const double z = aux(i, Aux::impedance);
-        const Mat<D> Mik = subcellMatrix<D>(corner, i, k);
+        Mat<D> Mik = subcellMatrix<D>(corner, i, k);
+        if (mesh.onTractionFace(r)) // as the nodal solve's (Geometry.hpp)
+            freeSurfaceFloor<D>(Mik, cornerInvNorm<D>(corner, i, k));
         const Vec<D> viscous = z * (Mik * (vr - vk));
         Vec<D> f = pressure + viscous;
         double elastic = 0.0;

@@ -24,11 +24,17 @@ struct MeshView
     View<const int**> cellFaceGroup; //!< boundary group of face k of a cell, -1 if interior (LayoutRight default)
     View<const LO**> cellNeighbour;  //!< local cell across face k, -1 on the boundary (complete for owned cells)
     View<const int*> nodeBoundary;   //!< 1 if a boundary face of a local cell holds the node (empty: not known)
+    View<const int*> nodeTraction;   //!< 1 if a face of imposed traction (free, pressure) holds it (empty: none)
     LO nOwnedCells = 0, nCells = 0;  //!< owned cells first, then ghosts
     LO nOwnedNodes = 0, nNodes = 0;  //!< owned nodes first, then the other nodes of local cells
 
     //! Whether node r may lie on a boundary face: true where nodeBoundary was not given (callers then look).
     KOKKOS_INLINE_FUNCTION bool mayBeOnBoundary(LO r) const { return nodeBoundary.extent(0) == 0 || nodeBoundary(r) != 0; }
+    //! Whether node r lies on a face where the traction is imposed (its corners take freeSurfaceFloor).
+    KOKKOS_INLINE_FUNCTION bool onTractionFace(LO r) const
+    {
+        return nodeTraction.extent(0) > 0 && nodeTraction(r) != 0;
+    }
 };
 
 //! Corner geometry of one simplex from its node positions.
@@ -225,18 +231,25 @@ KOKKOS_INLINE_FUNCTION Mat<D> summedCornerOuters(const RowField& corner, LO i)
     return S;
 }
 
+//! det(lambda I - S) = lambda^3 - c2 lambda^2 + c1 lambda - c0 of a symmetric 3x3 matrix S.
+KOKKOS_INLINE_FUNCTION void characteristicCoefficients(const Mat<3>& S, double& c2, double& c1, double& c0)
+{
+    c2 = S.a[0][0] + S.a[1][1] + S.a[2][2];
+    c1 = S.a[0][0] * S.a[1][1] + S.a[0][0] * S.a[2][2] + S.a[1][1] * S.a[2][2] - S.a[0][1] * S.a[0][1] -
+         S.a[0][2] * S.a[0][2] - S.a[1][2] * S.a[1][2];
+    c0 = S.a[0][0] * (S.a[1][1] * S.a[2][2] - S.a[1][2] * S.a[1][2]) -
+         S.a[0][1] * (S.a[0][1] * S.a[2][2] - S.a[1][2] * S.a[0][2]) +
+         S.a[0][2] * (S.a[0][1] * S.a[1][2] - S.a[1][1] * S.a[0][2]);
+}
+
 /*! An upper bound of the largest eigenvalue of the symmetric positive semi-definite 3x3 matrix S that is exact to
  *  round-off where that eigenvalue exceeds `floor`, or any value <= floor where it does not. Newton's method on the
  *  characteristic polynomial from an upper bound (Wolkowicz-Styan's) descends monotonically onto lambda_max (all
  *  roots real), and each iterate is an upper bound, so it stops as soon as one falls below floor: no libm calls. */
 KOKKOS_INLINE_FUNCTION double largestEigenvalueAbove(const Mat<3>& S, double floor)
 {
-    const double c2 = S.a[0][0] + S.a[1][1] + S.a[2][2];
-    const double c1 = S.a[0][0] * S.a[1][1] + S.a[0][0] * S.a[2][2] + S.a[1][1] * S.a[2][2] - S.a[0][1] * S.a[0][1] -
-                      S.a[0][2] * S.a[0][2] - S.a[1][2] * S.a[1][2];
-    const double c0 = S.a[0][0] * (S.a[1][1] * S.a[2][2] - S.a[1][2] * S.a[1][2]) -
-                      S.a[0][1] * (S.a[0][1] * S.a[2][2] - S.a[1][2] * S.a[0][2]) +
-                      S.a[0][2] * (S.a[0][1] * S.a[1][2] - S.a[1][1] * S.a[0][2]);
+    double c2, c1, c0;
+    characteristicCoefficients(S, c2, c1, c0);
     double frobenius2 = 0.0;
     for (int a = 0; a < 3; ++a)
         for (int b = 0; b < 3; ++b)
@@ -258,6 +271,55 @@ KOKKOS_INLINE_FUNCTION double largestEigenvalueAbove(const Mat<3>& S, double flo
         lambda = next;
     }
     return lambda > floor ? lambda : floor;
+}
+
+/*! The smallest eigenvalue of the symmetric positive semi-definite matrix S where it lies below `ceiling`, else a
+ *  value >= ceiling. 3x3: Newton's method on the characteristic polynomial from 0 rises monotonically onto
+ *  lambda_min (the polynomial is increasing and concave left of it) and stops once above ceiling. */
+template <int D>
+KOKKOS_INLINE_FUNCTION double smallestEigenvalueBelow(const Mat<D>& S, double ceiling)
+{
+    if constexpr (D == 2)
+    {
+        const double mean = 0.5 * (S.a[0][0] + S.a[1][1]), half = 0.5 * (S.a[0][0] - S.a[1][1]);
+        return mean - Kokkos::Experimental::sqrt(half * half + S.a[0][1] * S.a[0][1]);
+    }
+    else
+    {
+        double c2, c1, c0;
+        characteristicCoefficients(S, c2, c1, c0);
+        double lambda = 0.0;
+        for (int it = 0; it < 60 && lambda < ceiling; ++it)
+        {
+            const double p = ((lambda - c2) * lambda + c1) * lambda - c0;
+            const double slope = (3.0 * lambda - 2.0 * c2) * lambda + c1;
+            if (!(p < 0.0) || !(slope > 0.0))
+                break; // at lambda_min to round-off
+            const double next = lambda - p / slope;
+            if (!(next > lambda))
+                break;
+            lambda = next;
+        }
+        return lambda;
+    }
+}
+
+/*! The subcell matrix M_ik at a node of imposed traction (free, pressure, traction), with its smallest eigenvalue
+ *  raised to |c_k| / 8 (it is |c_k| / 2 on an equilateral triangle, |c_k| / 3 on a regular tetrahedron: well-shaped
+ *  corners keep M_ik). A zero-traction node moves at v_r - v = M_r^-1 sum_i p_i c_ir from its cells, and where an
+ *  expansion into vacuum stretches the boundary cells, their faces at r turn parallel and M_r loses its stiffness in
+ *  one direction: the node ran away along it and stretched the cells further (a gas square expanding into vacuum had
+ *  a node at x = 34 by t = 2, three times the gas's escape speed; docs/gpr-model.md 2.2, Boundaries). With the floor,
+ *  z_i M_ik >= z_i |c_ik| / 8 and a node moves at most 8 max_i(p_i / z_i) from its cells. The nodal solve and the
+ *  subcell forces share the matrix, so conservation and the node balance hold as before. */
+template <int D>
+KOKKOS_INLINE_FUNCTION void freeSurfaceFloor(Mat<D>& M, double invNorm)
+{
+    const double floor = 0.125 / invNorm;
+    const double lambda = smallestEigenvalueBelow<D>(M, floor);
+    if (lambda < floor)
+        for (int a = 0; a < D; ++a)
+            M.a[a][a] += floor - lambda;
 }
 
 /*! \brief The time step's length of cell i: the insphere diameter 2|T|/sum_k |c_k| (Simplex::charLength), or the

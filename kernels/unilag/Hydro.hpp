@@ -301,6 +301,8 @@ void nodalSolve(const MeshView<D>& mesh, const BoundaryView& bc, const ConstFiel
             cornerValues<D, P>(state, aux, stress, rec, i, r, vi, p, sigma);
             Mat<D> Mik = subcellMatrix<D>(corner, i, k);
             const Vec<D> ck = cornerVec<D>(corner, i, k);
+            if (mesh.onTractionFace(r))
+                freeSurfaceFloor<D>(Mik, cornerInvNorm<D>(corner, i, k));
             const Vec<D> Mv = Mik * vi;
             for (int a = 0; a < D; ++a)
             {

@@ -59,6 +59,8 @@ template <int D, class P> struct GprModel
      *  in carry move by global id, the other work arrays are reallocated empty (geometry and EOS are the caller's
      *  to recompute). Collective. */
     void remesh(std::shared_ptr<DistributedMesh> newMesh, const std::vector<std::string>& carry);
+    //! m.nodeTraction from bc: the local nodes on a free, pressure or traction face (after bc is set, and remesh).
+    void markTractionNodes();
 
     const Scene& scene;
     std::shared_ptr<DistributedMesh> mesh;
@@ -195,12 +197,36 @@ void GprModel<D, P>::remesh(std::shared_ptr<DistributedMesh> newMesh, const std:
     fields.migrate(newMesh, carry);
     mesh = std::move(newMesh);
     m = mesh->view<D>();
+    markTractionNodes();
     allocateWork();
     auto materialHost = fields["material"].getLocalViewHost(Tpetra::Access::ReadOnly);
     auto cellMaterialHost = Kokkos::create_mirror_view(cellMaterial);
     for (LO i = 0; i < mesh->nCells; ++i)
         cellMaterialHost(i) = int(materialHost(i, 0));
     Kokkos::deep_copy(cellMaterial, cellMaterialHost);
+}
+
+template <int D, class P> void GprModel<D, P>::markTractionNodes()
+{
+    const auto& dm = *mesh;
+    const auto type = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), bc.type);
+    const int nv = D + 1;
+    View<int*> traction("unilag::nodeTraction", dm.nNodes);
+    auto th = Kokkos::create_mirror_view(traction); // zero-initialised
+    bool any = false;
+    for (LO i = 0; i < dm.nCells; ++i) // every cell at a node of an owned cell is local, so each node is complete
+        for (int f = 0; f < nv; ++f)
+        {
+            const int g = dm.cellFaceGroupHost[std::size_t(nv) * i + f];
+            if (g < 0 || !(type(g) == BcFree || type(g) == BcPressure || type(g) == BcTraction))
+                continue;
+            any = true;
+            for (int k = 0; k < nv; ++k)
+                if (k != f) // face f is opposite local node f
+                    th(dm.cellNodesHost[std::size_t(nv) * i + k]) = 1;
+        }
+    Kokkos::deep_copy(traction, th);
+    m.nodeTraction = any ? traction : View<int*>(); // empty: no node to look up
 }
 
 } // namespace unilag

@@ -111,6 +111,7 @@ template <int D, class P> std::string setupBoundaries(GprModel<D, P>& md)
     Kokkos::deep_copy(temperature, tempH);
     Kokkos::deep_copy(plane, ph);
     md.bc = BoundaryView{type, value, thermal, temperature, plane};
+    md.markTractionNodes();
     md.bcValue = value;
     md.bcValueHost = vh;
     return {};
