@@ -302,10 +302,10 @@ int runOnRankZero(const TubeScene& scene, bool check)
         return ExitUnstable;
     }
     std::printf("unilag: %s: tube gas + free rod, %d segments, %ld steps in %.3g s, mass change %.3g, momentum "
-                "change %.3g of its scale, max energy change %.3g, shock speed %.5g (rigid exact %.5g); output in %s\n",
+                "change %.3g of its scale, max energy change %.3g, %s; output in %s\n",
                 scene.name.c_str(), g.setup.cells, loop.state.steps, f.wall,
                 relative(loop.initialTotals[0], loop.finalTotals[0]), f.momentumChange, f.maxEnergyChange,
-                f.shockSpeed, f.ref.shockSpeed, dir.c_str());
+                shockSpeedText(f.shockSpeed, f.ref.shockSpeed, "rigid exact").c_str(), dir.c_str());
     return check ? checkRun(g, loop, f) : ExitOk;
 }
 

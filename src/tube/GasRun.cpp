@@ -326,15 +326,15 @@ int runOnRankZero(const TubeScene& scene, bool check)
         return ExitUnstable;
     }
     if (g.wall.enabled)
-        std::printf("unilag: %s: tube gas + wall, %d cells, %ld steps in %.3g s, energy change %.3g, shock speed "
-                    "%.5g; output in %s\n",
+        std::printf("unilag: %s: tube gas + wall, %d cells, %ld steps in %.3g s, energy change %.3g, %s; output in "
+                    "%s\n",
                     scene.name.c_str(), g.setup.cells, loop.state.steps, f.wall,
-                    relativeChange(loop.initialTotals, loop.finalTotals, 1), f.shockSpeed, dir.c_str());
+                    relativeChange(loop.initialTotals, loop.finalTotals, 1),
+                    shockSpeedText(f.shockSpeed, std::nan("")).c_str(), dir.c_str());
     else
-        std::printf("unilag: %s: tube gas, %d cells, %ld steps in %.3g s, L1(rho) %.4g, shock speed %.5g (exact %.5g); "
-                    "output in %s\n",
-                    scene.name.c_str(), g.setup.cells, loop.state.steps, f.wall, f.l1, f.shockSpeed, f.ref.shockSpeed,
-                    dir.c_str());
+        std::printf("unilag: %s: tube gas, %d cells, %ld steps in %.3g s, L1(rho) %.4g, %s; output in %s\n",
+                    scene.name.c_str(), g.setup.cells, loop.state.steps, f.wall, f.l1,
+                    shockSpeedText(f.shockSpeed, f.ref.shockSpeed).c_str(), dir.c_str());
     return check ? checkRun(g, loop, f) : ExitOk;
 }
 
