@@ -72,6 +72,51 @@ const Teuchos::ParameterList& emptyList()
     return empty;
 }
 
+/*! The list of a --set value "[a, b, c]": numbers if every item is one, else text items (quotes removed), as the
+ *  YAML parser gives a list that mixes expressions and numbers (velocity: ["x < 0 ? -2 : 2", 0]). */
+Teuchos::ParameterEntry listValue(const std::string& value)
+{
+    const auto close = value.rfind(']');
+    const std::string body = value.substr(1, close == std::string::npos || close == 0 ? std::string::npos : close - 1);
+    if (body.find_first_not_of(' ') == std::string::npos)
+        return Teuchos::ParameterEntry(Teuchos::Array<double>()); // [] (refused by the reader, naming the key)
+    std::vector<std::string> parts(1); // split at the commas outside quotes and parentheses: max(r, 1e-12) is one
+    int depth = 0;
+    char quote = 0;
+    for (char ch : body)
+    {
+        if (quote)
+            quote = ch == quote ? 0 : quote;
+        else if (ch == '"' || ch == '\'')
+            quote = ch;
+        else if (ch == '(')
+            ++depth;
+        else if (ch == ')')
+            --depth;
+        else if (ch == ',' && depth == 0)
+        {
+            parts.emplace_back();
+            continue;
+        }
+        parts.back() += ch;
+    }
+    Teuchos::Array<std::string> items;
+    Teuchos::Array<double> numbers;
+    bool allNumbers = true;
+    for (std::string item : parts)
+    {
+        item.erase(0, item.find_first_not_of(' '));
+        item.erase(item.find_last_not_of(' ') + 1);
+        if (item.size() >= 2 && (item.front() == '"' || item.front() == '\'') && item.back() == item.front())
+            item = item.substr(1, item.size() - 2);
+        double d;
+        allNumbers = allNumbers && parseNumber(item, d);
+        numbers.push_back(allNumbers ? d : 0.0);
+        items.push_back(item);
+    }
+    return allNumbers ? Teuchos::ParameterEntry(numbers) : Teuchos::ParameterEntry(items);
+}
+
 //! Apply one "a.b.c=value" override; a text entry stays text, a number is an integer only if written as one.
 void applyOverride(Teuchos::ParameterList& root, const std::string& file, const std::string& assignment)
 {
@@ -97,22 +142,7 @@ void applyOverride(Teuchos::ParameterList& root, const std::string& file, const 
     else if (value == "true" || value == "false")
         list->set(key, value == "true");
     else if (!value.empty() && value.front() == '[')
-    {
-        Teuchos::Array<double> arr;
-        std::string body =
-            value.substr(1, value.find(']') == std::string::npos ? std::string::npos : value.find(']') - 1);
-        std::stringstream ss(body);
-        std::string item;
-        while (std::getline(ss, item, ','))
-        {
-            item.erase(0, item.find_first_not_of(' '));
-            item.erase(item.find_last_not_of(' ') + 1);
-            if (!parseNumber(item, d))
-                throw InputError(file + ": --set '" + path + "': '" + item + "' is not a number");
-            arr.push_back(d);
-        }
-        list->set(key, arr);
-    }
+        list->setEntry(key, listValue(value));
     else if (value.find_first_of(".eE") == std::string::npos && std::abs(d) <= 2147483647.0 && d == std::trunc(d))
         list->set(key, int(d));
     else // typed by the value, not the entry it replaces: 0.002 over `interval: 0` must not become 0

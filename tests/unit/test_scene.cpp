@@ -278,6 +278,13 @@ TEST(Scene, SetTakesTheTypeOfItsValue)
     EXPECT_EQ(s.order, 2); // an integer key takes 2.0
     const std::string frac = inputError([&] { unilag::readScene(file, {"scheme.order=1.5"}); });
     EXPECT_PRED2(contains, frac, "scheme.order");
+
+    // a list may hold expressions, as in the file; commas inside parentheses and quotes stay in their item
+    const unilag::Scene v = unilag::readScene(file, {"regions.gas.velocity=[\"-x / max(r, 1e-12)\", 0.5]"});
+    EXPECT_EQ(v.regions.at("gas").velocity[0].text, "-x / max(r, 1e-12)");
+    EXPECT_DOUBLE_EQ(v.regions.at("gas").velocity[1].value, 0.5);
+    const std::string word = inputError([&] { unilag::readScene(file, {"energy_deposit.position=[0, abc]"}); });
+    EXPECT_PRED2(contains, word, "energy_deposit.position");
 }
 
 TEST(Scene, GprDefaultsAreAnIdealFluid)
