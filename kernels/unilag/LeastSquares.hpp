@@ -176,6 +176,57 @@ KOKKOS_INLINE_FUNCTION void addNodeTerm(const Vec<D>& e, const double (&wj)[NQ],
     }
 }
 
+/*! At a boundary node without mirror images the cells lie on one side of the node, and the extrema of their values
+ *  do not bound a linear field's value there: vertex bounds clipped linear fields at every such vertex (a spinning
+ *  elastic ring kept 78% of its kinetic energy over half a turn; docs/gpr-model.md 3.11). Widens each quantity's
+ *  extrema by the node value of the weighted linear fit over the node's cells, min_{c,b} sum w (a - c - b.e)^2,
+ *  exact for a linear field. Skipped where the cells do not span D directions (a corner node with one cell). */
+template <int D, int NQ>
+KOKKOS_INLINE_FUNCTION void widenByNodeFit(double (&s)[NodeSumLayout<D, NQ, true>::ncol], int nFit)
+{
+    using L = NodeSumLayout<D, NQ, true>;
+    const double s0 = s[L::s0];
+    if (!(s[L::count] > D) || !(s0 > 0.0))
+        return;
+    Vec<D> mean; // S1 / S0
+    for (int a = 0; a < D; ++a)
+        mean[a] = s[L::s1 + a] / s0;
+    Mat<D> C; // the fit's normal matrix once c is eliminated: S2 - S1 S1^T / S0 (dimensionless, as A of a cell)
+    double trace = 0.0;
+    for (int a = 0; a < D; ++a)
+        for (int b = 0; b < D; ++b)
+        {
+            C.a[a][b] = s[L::sym(a < b ? a : b, a < b ? b : a)] - s[L::s1 + a] * mean[b];
+            trace += a == b ? C.a[a][a] : 0.0;
+        }
+    double det;
+    if constexpr (D == 2)
+        det = C.a[0][0] * C.a[1][1] - C.a[0][1] * C.a[1][0];
+    else
+        det = C.a[0][0] * (C.a[1][1] * C.a[2][2] - C.a[1][2] * C.a[2][1]) -
+              C.a[0][1] * (C.a[1][0] * C.a[2][2] - C.a[1][2] * C.a[2][0]) +
+              C.a[0][2] * (C.a[1][0] * C.a[2][1] - C.a[1][1] * C.a[2][0]);
+    const double scale = trace / D;
+    if (!(det > 1e-10 * (D == 2 ? scale * scale : scale * scale * scale)))
+        return;
+    for (int q = 0; q < NQ; ++q) // to NQ, not nFit: a compile-time trip count keeps s in registers on a GPU
+    {
+        if (q >= nFit)
+            continue;
+        const double* t = s + L::q0 + q * L::perQ; // u_ref, T0 = sum w a, T1 = sum w a e
+        Vec<D> rhs;
+        for (int a = 0; a < D; ++a)
+            rhs[a] = t[2 + a] - mean[a] * t[1];
+        const Vec<D> b = solve(C, rhs);
+        double c = t[1];
+        for (int a = 0; a < D; ++a)
+            c -= s[L::s1 + a] * b[a];
+        const double atNode = t[0] + c / s0;
+        s[L::lo + q] = lesser(s[L::lo + q], atNode);
+        s[L::hi + q] = greater(s[L::hi + q], atNode);
+    }
+}
+
 /*! The least-squares sums of every local node whose cells are all local (the nodes of owned cells; the others' rows
  *  are not read), the images across the mirroring planes through the node included. */
 template <int D, class Q, bool PerVertex>
@@ -244,6 +295,9 @@ void nodeSums(const MeshView<D>& mesh, const Q& quantities, const CellGeometry& 
                 addNodeTerm<D, NQ, PerVertex>(e, wj, ref, fitted, s);
             }
         }
+        if constexpr (PerVertex)
+            if (boundaryNode && nPlanes == 0 && mesh.nodeBoundary.extent(0) > 0 && mesh.nodeBoundary(r) != 0)
+                widenByNodeFit<D, NQ>(s, fitted);
         for (int c = 0; c < L::ncol; ++c)
             sums(r, c) = s[c];
     };

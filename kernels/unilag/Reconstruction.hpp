@@ -19,7 +19,8 @@
  *         (no new extrema, first order at shocks: the sharpest 2D Sedov shock). The price: linear fields are clipped
  *         at many vertices (most of them in 3D), so smooth regions get less than full second order.
  *       - VertexBased: the extrema over every cell around the vertex bound it as well (after Kuzmin), which keeps
- *         linear fields whole in cells without a boundary vertex: the choice for smooth and elastic flows (the plate).
+ *         linear fields whole (at boundary nodes without mirror images with bounds widened by the node's own
+ *         linear fit: LeastSquares.hpp widenByNodeFit): the choice for smooth and elastic flows (the plate).
  *     Limiter::None skips the limiter (shock-free flows only). Bounds over the whole node-neighbour stencil were
  *     measured and not kept: too weak at the 2D Sedov shock, and the viscous 3D Sedov tangles.
  *   - What is reconstructed (scene key scheme.reconstruct): all of it, or the velocity alone (Reconstructed), the
