@@ -24,12 +24,14 @@ struct MeshView
     View<const int**> cellFaceGroup; //!< boundary group of face k of a cell, -1 if interior (LayoutRight default)
     View<const LO**> cellNeighbour;  //!< local cell across face k, -1 on the boundary (complete for owned cells)
     View<const int*> nodeBoundary;   //!< 1 if a boundary face of a local cell holds the node (empty: not known)
-    View<const int*> nodeTraction;   //!< 1 if a face of imposed traction (free, pressure) holds it (empty: none)
+    View<const int*> nodeTraction;   //!< 1 if a free, pressure or traction face holds the node (empty: none)
     LO nOwnedCells = 0, nCells = 0;  //!< owned cells first, then ghosts
     LO nOwnedNodes = 0, nNodes = 0;  //!< owned nodes first, then the other nodes of local cells
 
     //! Whether node r may lie on a boundary face: true where nodeBoundary was not given (callers then look).
     KOKKOS_INLINE_FUNCTION bool mayBeOnBoundary(LO r) const { return nodeBoundary.extent(0) == 0 || nodeBoundary(r) != 0; }
+    //! Whether node r is known to lie on a boundary face.
+    KOKKOS_INLINE_FUNCTION bool onBoundary(LO r) const { return nodeBoundary.extent(0) > 0 && nodeBoundary(r) != 0; }
     //! Whether node r lies on a face where the traction is imposed (its corners take freeSurfaceFloor).
     KOKKOS_INLINE_FUNCTION bool onTractionFace(LO r) const
     {

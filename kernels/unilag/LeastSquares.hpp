@@ -199,14 +199,7 @@ KOKKOS_INLINE_FUNCTION void widenByNodeFit(double (&s)[NodeSumLayout<D, NQ, true
             C.a[a][b] = s[L::sym(a < b ? a : b, a < b ? b : a)] - s[L::s1 + a] * mean[b];
             trace += a == b ? C.a[a][a] : 0.0;
         }
-    double det;
-    if constexpr (D == 2)
-        det = C.a[0][0] * C.a[1][1] - C.a[0][1] * C.a[1][0];
-    else
-        det = C.a[0][0] * (C.a[1][1] * C.a[2][2] - C.a[1][2] * C.a[2][1]) -
-              C.a[0][1] * (C.a[1][0] * C.a[2][2] - C.a[1][2] * C.a[2][0]) +
-              C.a[0][2] * (C.a[1][0] * C.a[2][1] - C.a[1][1] * C.a[2][0]);
-    const double scale = trace / D;
+    const double det = determinant(C), scale = trace / D;
     if (!(det > 1e-10 * (D == 2 ? scale * scale : scale * scale * scale)))
         return;
     for (int q = 0; q < NQ; ++q) // to NQ, not nFit: a compile-time trip count keeps s in registers on a GPU
@@ -296,7 +289,7 @@ void nodeSums(const MeshView<D>& mesh, const Q& quantities, const CellGeometry& 
             }
         }
         if constexpr (PerVertex)
-            if (boundaryNode && nPlanes == 0 && mesh.nodeBoundary.extent(0) > 0 && mesh.nodeBoundary(r) != 0)
+            if (boundaryNode && nPlanes == 0 && mesh.onBoundary(r))
                 widenByNodeFit<D, NQ>(s, fitted);
         for (int c = 0; c < L::ncol; ++c)
             sums(r, c) = s[c];
@@ -377,16 +370,10 @@ KOKKOS_INLINE_FUNCTION void limitCellGradients(const MeshView<D>& mesh, const Q&
                 }
         }
     // A = sum w d d^T is dimensionless (w = 1/|d|^2); a stencil that does not span D directions gives no gradient.
-    double trace = 0.0, det;
+    double trace = 0.0;
     for (int a = 0; a < D; ++a)
         trace += A.a[a][a];
-    if constexpr (D == 2)
-        det = A.a[0][0] * A.a[1][1] - A.a[0][1] * A.a[1][0];
-    else
-        det = A.a[0][0] * (A.a[1][1] * A.a[2][2] - A.a[1][2] * A.a[2][1]) -
-              A.a[0][1] * (A.a[1][0] * A.a[2][2] - A.a[1][2] * A.a[2][0]) +
-              A.a[0][2] * (A.a[1][0] * A.a[2][1] - A.a[1][1] * A.a[2][0]);
-    const double scale = trace / D;
+    const double det = determinant(A), scale = trace / D;
     const bool spans = det > 1e-10 * (D == 2 ? scale * scale : scale * scale * scale);
     for (int q = 0; q < NQ; ++q)
     {

@@ -153,6 +153,18 @@ struct Mat
     }
 };
 
+//! det M (D = 2, 3), expanded along the first row.
+template <int D>
+KOKKOS_INLINE_FUNCTION double determinant(const Mat<D>& M)
+{
+    const auto& a = M.a;
+    if constexpr (D == 2)
+        return a[0][0] * a[1][1] - a[0][1] * a[1][0];
+    else
+        return a[0][0] * (a[1][1] * a[2][2] - a[1][2] * a[2][1]) - a[0][1] * (a[1][0] * a[2][2] - a[1][2] * a[2][0]) +
+               a[0][2] * (a[1][0] * a[2][1] - a[1][1] * a[2][0]);
+}
+
 //! Solve M x = b for small SPD M by Cramer's rule (D = 1, 2, 3).
 template <int D>
 KOKKOS_INLINE_FUNCTION Vec<D> solve(const Mat<D>& M, const Vec<D>& b)

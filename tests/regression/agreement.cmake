@@ -105,6 +105,22 @@ set_tests_properties(impact2d_agree PROPERTIES FIXTURES_REQUIRED impact2d LABELS
 # The comparison can fail: compare_runs.py at 0 rejects runs that differ in a field only (3D hydro at order 1 vs 2,
 # both 39 steps: 0.47 apart), in the step count (2D hydro, 75 vs 79 steps), or in the datasets written (3D heat vs
 # elastic, both 34 steps).
+# Free surfaces across ranks: the floor on the corner matrices at traction nodes (Geometry.hpp freeSurfaceFloor) and
+# the vertex bounds' node fit at boundary nodes (LeastSquares.hpp widenByNodeFit) where the partition cuts a free
+# boundary: the spinning ring at order 2 with vertex_based (t = 3, 496 steps) and the free expansion to t = 1, on 1
+# and 3 ranks, bitwise.
+foreach(np 1 3)
+  add_test(NAME free_surface_ring_np${np} COMMAND ${MPI_RUN} ${np} ${UNILAG} run ${SCENES}/spinning_ring.yaml --quiet
+           --check --set scheme.limiter=vertex_based --set time.end=3.0 --output ${WORK}/free_surface_ring_np${np})
+  add_test(NAME free_surface_square_np${np} COMMAND ${MPI_RUN} ${np} ${UNILAG} run ${SCENES}/free_expansion.yaml
+           --quiet --check --set time.end=1.0 --set output.enabled=true --output ${WORK}/free_surface_square_np${np})
+  set_tests_properties(free_surface_ring_np${np} free_surface_square_np${np} PROPERTIES ENVIRONMENT
+                       "OMP_NUM_THREADS=1" FIXTURES_SETUP free_surface LABELS "gpr;mpi;regression" PROCESSORS ${np})
+endforeach()
+add_test(NAME free_surface_agree COMMAND ${PYTHON} ${SCRIPTS}/compare_runs.py 0 ${WORK}/free_surface_ring_np1
+         ${WORK}/free_surface_ring_np3 -- ${WORK}/free_surface_square_np1 ${WORK}/free_surface_square_np3)
+set_tests_properties(free_surface_agree PROPERTIES FIXTURES_REQUIRED free_surface LABELS "gpr;mpi;regression")
+
 add_test(NAME compare_runs_fails_fields COMMAND ${PYTHON} ${SCRIPTS}/compare_runs.py 0 ${WORK}/variant3d_hydro_o1_np1
          ${WORK}/variant3d_hydro_o2_np1)
 set_tests_properties(compare_runs_fails_fields PROPERTIES FIXTURES_REQUIRED variant3d_hydro
