@@ -14,26 +14,61 @@
 namespace unilag
 {
 
-//! Mass (sum of |T_i| / omega_i: tests the GCL), momentum, total energy, and sum m|v| over owned cells.
-template <int D, class P> void totals(const GprModel<D, P>& md, double (&out)[D + 3])
+/*! The columns of totals(): mass, momentum, energy and sum m|v| (conservation), then what the angular momentum about
+ *  the centre of mass is formed from (GprRun.hpp angularMomentum): about the origin (its z in 2D), sum m, sum m x,
+ *  sum m |x|^2 and sum m |v|^2. */
+template <int D> struct TotalsLayout
+{
+    enum : int
+    {
+        mass = 0,                        //!< sum |T_i| / omega_i (tests the GCL)
+        momentum = 1,                    //!< D columns
+        energy = 1 + D,                  //!< total energy
+        speed = 2 + D,                   //!< sum m |v|, the momentum in play
+        angular = 3 + D,                 //!< sum m x × v, NL columns
+        NL = D == 2 ? 1 : 3,
+        cellMass = angular + NL,         //!< sum m
+        firstMoment = cellMass + 1,      //!< sum m x, D columns
+        secondMoment = firstMoment + D,  //!< sum m |x|^2
+        kinetic = secondMoment + 1,      //!< sum m |v|^2
+        size = kinetic + 1,
+    };
+};
+
+/*! Over owned cells, the TotalsLayout columns (x_i the centroid). The angular momentum is not conserved by the
+ *  scheme, which dissipates the velocity jumps of a rotation (docs/gpr-model.md 3.11). Collective. */
+template <int D, class P> void totals(const GprModel<D, P>& md, double (&out)[TotalsLayout<D>::size])
 {
     using S = StateLayout<D, P>;
+    using T = TotalsLayout<D>;
     auto s = md.fields["state"].getLocalViewDevice(Tpetra::Access::ReadOnly);
     auto volume = md.geom.volume;
+    auto centroid = md.geom.centroid;
     auto mass = md.mass();
-    auto sum = KOKKOS_LAMBDA(const LO i, double(&acc)[D + 3])
+    auto sum = KOKKOS_LAMBDA(const LO i, double(&acc)[T::size])
     {
-        acc[0] += volume(i) / s(i, S::omega);
-        double v2 = 0.0;
+        const double m = mass(i);
+        acc[T::mass] += volume(i) / s(i, S::omega);
+        double v2 = 0.0, x2 = 0.0, v[3] = {0.0, 0.0, 0.0}, x[3] = {0.0, 0.0, 0.0};
         for (int d = 0; d < D; ++d)
         {
-            acc[1 + d] += mass(i) * s(i, S::vel + d);
-            v2 += s(i, S::vel + d) * s(i, S::vel + d);
+            v[d] = s(i, S::vel + d);
+            x[d] = centroid(i, d);
+            acc[T::momentum + d] += m * v[d];
+            acc[T::firstMoment + d] += m * x[d];
+            v2 += v[d] * v[d];
+            x2 += x[d] * x[d];
         }
-        acc[1 + D] += mass(i) * s(i, S::energy);
-        acc[2 + D] += mass(i) * Kokkos::Experimental::sqrt(v2);
+        acc[T::energy] += m * s(i, S::energy);
+        acc[T::speed] += m * Kokkos::Experimental::sqrt(v2);
+        const double cross[3] = {x[1] * v[2] - x[2] * v[1], x[2] * v[0] - x[0] * v[2], x[0] * v[1] - x[1] * v[0]};
+        for (int c = 0; c < T::NL; ++c)
+            acc[T::angular + c] += m * cross[T::NL == 1 ? 2 : c];
+        acc[T::cellMass] += m;
+        acc[T::secondMoment] += m * x2;
+        acc[T::kinetic] += m * v2;
     };
-    sumReduce<D + 3>("unilag::diagnostics::totals", md.m.nOwnedCells, sum, out);
+    sumReduce<T::size>("unilag::diagnostics::totals", md.m.nOwnedCells, sum, out);
     mpi::allSum(md.comm, out);
 }
 

@@ -18,11 +18,42 @@
 namespace unilag
 {
 
+/*! The angular momentum about the centre of mass, L = sum m (x - x_c) × (v - v_c) = L_0 - M x_c × v_c (its z in 2D),
+ *  and sqrt(I K) with I = sum m |x - x_c|^2, K = sum m |v - v_c|^2, which bounds |L| (Cauchy-Schwarz) and equals it
+ *  for a rigid rotation: the angular momentum in play. From the sums of totals(). */
+template <int D> struct AngularMomentum
+{
+    double L[3] = {0.0, 0.0, 0.0};
+    double scale = 0.0;
+};
+
+template <int D> AngularMomentum<D> angularMomentum(const std::vector<double>& t)
+{
+    using T = TotalsLayout<D>;
+    AngularMomentum<D> a;
+    const double M = std::max(t[T::cellMass], 1e-300);
+    double xc[3] = {0.0, 0.0, 0.0}, vc[3] = {0.0, 0.0, 0.0}, x2 = 0.0, v2 = 0.0;
+    for (int d = 0; d < D; ++d)
+    {
+        xc[d] = t[T::firstMoment + d] / M;
+        vc[d] = t[T::momentum + d] / M;
+        x2 += xc[d] * xc[d];
+        v2 += vc[d] * vc[d];
+    }
+    const double cross[3] = {xc[1] * vc[2] - xc[2] * vc[1], xc[2] * vc[0] - xc[0] * vc[2], xc[0] * vc[1] - xc[1] * vc[0]};
+    for (int k = 0; k < T::NL; ++k)
+        a.L[k] = t[T::angular + k] - M * cross[T::NL == 1 ? 2 : k];
+    a.scale = std::sqrt(std::max(0.0, t[T::secondMoment] - M * x2) * std::max(0.0, t[T::kinetic] - M * v2));
+    return a;
+}
+
 //! Conservation over a run: mass from the geometry (GCL), momentum and energy net of boundary impulse and work.
 struct Conservation
 {
     double mass = 0.0, momentum = 0.0, energy = 0.0;
     double energyScale = 0.0; //!< the largest energy in play, what the energy defects are relative to
+    //! |L_final - L_initial| / the larger sqrt(I K) (about the centre of mass; boundary torques not subtracted)
+    double angularMomentum = 0.0;
 };
 
 template <int D>
@@ -44,6 +75,11 @@ Conservation conservation(const std::vector<double>& initial, const std::vector<
     // relative to the largest energy in play (a body at rest hit by a piston starts with none)
     c.energyScale = std::max({std::abs(initial[1 + D]), std::abs(final_[1 + D]), std::abs(work), 1e-300});
     c.energy = std::abs(final_[1 + D] - initial[1 + D] - work) / c.energyScale;
+    const AngularMomentum<D> a0 = angularMomentum<D>(initial), a1 = angularMomentum<D>(final_);
+    double dl = 0.0;
+    for (int k = 0; k < TotalsLayout<D>::NL; ++k)
+        dl += std::pow(a1.L[k] - a0.L[k], 2);
+    c.angularMomentum = std::sqrt(dl) / std::max({a0.scale, a1.scale, 1e-300});
     return c;
 }
 
@@ -159,6 +195,16 @@ int selfCheck(const GprModel<D, P>& md, const GprSystem<D, P>& sys, const Conser
     return reportCheck(fails, md.rank == 0);
 }
 
+//! The angular momentum about the centre of mass of totals() as JSON: its z component in 2D, [x, y, z] in 3D.
+template <int D> std::string angularText(const std::vector<double>& totals)
+{
+    const AngularMomentum<D> a = angularMomentum<D>(totals);
+    if constexpr (D == 2)
+        return jsonNumber(a.L[0]);
+    else
+        return "[" + jsonNumber(a.L[0]) + ", " + jsonNumber(a.L[1]) + ", " + jsonNumber(a.L[2]) + "]";
+}
+
 template <int D, class P>
 void writeSummary(const GprModel<D, P>& md, const GprSystem<D, P>& sys, const RunOptions& options, const LoopResult& r,
                   const Conservation& c, const ExactErrors& x, const std::vector<double>& radii)
@@ -176,6 +222,9 @@ void writeSummary(const GprModel<D, P>& md, const GprSystem<D, P>& sys, const Ru
     s.number("t_final", r.state.t).number("wall_seconds", r.wallSeconds).number("cell_steps_per_second", cellSteps);
     s.number("mass_relative_change", c.mass).number("momentum_relative_change", c.momentum);
     s.number("energy_relative_change", c.energy).number("max_gcl_defect", sys.maxGclDefect());
+    s.object("angular_momentum", {{"initial", angularText<D>(r.initialTotals)},
+                                  {"final", angularText<D>(r.finalTotals)},
+                                  {"relative_change", jsonNumber(c.angularMomentum)}});
     const BoundaryBalance<D>& b = sys.balance();
     std::vector<std::pair<std::string, std::string>> impulse;
     for (int d = 0; d < D; ++d)

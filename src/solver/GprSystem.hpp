@@ -254,12 +254,12 @@ template <int D, class P> class GprSystem : public TimeSystem
             dump(md_, *writer_, index, t);
     }
 
-    //! Mass (sum |T_i| / omega_i: tests the GCL), momentum, total energy, sum m|v|.
+    //! Mass, momentum, total energy, sum m|v|, and the angular momentum's sums (GprDiagnostics.hpp TotalsLayout).
     std::vector<double> totals() override
     {
-        double t[D + 3];
+        double t[TotalsLayout<D>::size];
         unilag::totals(md_, t);
-        return std::vector<double>(t, t + D + 3);
+        return std::vector<double>(t, t + TotalsLayout<D>::size);
     }
 
     //! <output>/checkpoint.h5 (written to a temporary name, then renamed). Collective.
@@ -313,6 +313,8 @@ template <int D, class P> class GprSystem : public TimeSystem
         s.retries = int(l[5]);
         s.nextCheckpoint = l[6];
         s.initialTotals = in.numbers("initial_totals");
+        if (s.initialTotals.size() != std::size_t(TotalsLayout<D>::size))
+            throw InputError("--restart '" + path + "': the initial totals have the wrong length");
         picardTotal_ = long(run[0]);
         picardMax_ = int(run[1]);
         maxGcl_ = run[2];

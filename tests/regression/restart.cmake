@@ -58,7 +58,7 @@ restart_error(corrupt_table ${WORK}/corrupt_table.h5 "corrupt: table 'cell.state
 restart_error(corrupt_text ${WORK}/corrupt_text.h5 "corrupt: text 'physics' does not match its checksum$"
               ${SMALL_SEDOV})
 restart_error(corrupt_format ${WORK}/corrupt_format.h5
-              "not a unilag checkpoint of this version \\(format '\\?\\?ilag checkpoint 2', expected 'unilag checkpoint 2'\\)$"
+              "not a unilag checkpoint of this version \\(format '\\?\\?ilag checkpoint 3', expected 'unilag checkpoint 3'\\)$"
               ${SMALL_SEDOV})
 restart_error(other_mesh ${CK} "a checkpoint of another run \\(cells '1018', this scene '4048'\\)" ${SMALL_SEDOV}
               --set mesh.size=0.0288)

@@ -9,11 +9,13 @@ usage: spinning_ring.py UNILAG SCENE WORKDIR [--linear]
 - order 1 on 1,920 and 7,680 cells: the kinetic energy lost to the nodal solver's dissipation of the rotation's
   velocity jumps falls at first order in h (the log of the kept fraction halves: measured -1.99 -> -1.02, ratio
   1.96; at least 1.7), so the scheme is consistent, and the run conserves (--check) while it spins down.
-Every run: --check (mass, momentum, energy, node balance).
+Every run: --check (mass, momentum, energy, node balance), and summary.json's angular_momentum (initial, final) equal
+to the dumps' to 1e-9.
 --linear instead: one step with scheme.limiter vertex_based gives the unlimited step's cell velocities and node
 positions to 1e-12 of the rim speed and radius (the initial velocity is linear, which the vertex bounds must keep
 whole at the free boundaries' vertices too: LeastSquares.hpp widenByNodeFit)."""
 import glob
+import json
 import math
 import subprocess
 import sys
@@ -38,6 +40,11 @@ def run(unilag, scene, out, *sets):
     subprocess.run(cmd, check=True)
     dumps = sorted(glob.glob(out + "/unilag_*.h5"))
     (l0, k0), (l1, k1) = spin(dumps[0]), spin(dumps[-1])
+    with open(out + "/summary.json") as f:
+        reported = json.load(f)["angular_momentum"]
+    # summary.json's angular momentum (about the centre of mass, here the origin: the ring is centred and at rest)
+    if not (abs(reported["initial"] - l0) <= 1e-9 * l0 and abs(reported["final"] - l1) <= 1e-9 * l0):
+        sys.exit(f"FAIL: summary.json's angular momentum {reported} is not the dumps' {l0}, {l1}")
     print(f"{' '.join(sets):55s} angular momentum {l0:.5f} -> {l1:.5f} ({l1 / l0 - 1:+.2%}), "
           f"kinetic energy kept {k1 / k0:.2%}")
     return l1 / l0, k1 / k0

@@ -96,13 +96,13 @@ template <int D> struct SolverHarness
         auto h = model.fields[field].getLocalViewHost(Tpetra::Access::ReadOnly);
         return std::vector<double>(h.data(), h.data() + h.extent(0) * h.extent(1));
     }
-    //! Mass, momentum, total energy and sum m|v| (GprDiagnostics.hpp totals).
-    std::array<double, D + 3> totals() const
+    //! Mass, momentum, total energy, sum m|v| and the angular momentum's sums (GprDiagnostics.hpp TotalsLayout).
+    std::array<double, unilag::TotalsLayout<D>::size> totals() const
     {
-        double t[D + 3];
+        std::array<double, unilag::TotalsLayout<D>::size> out;
+        double t[unilag::TotalsLayout<D>::size];
         unilag::totals(model, t);
-        std::array<double, D + 3> out;
-        std::copy(t, t + D + 3, out.begin());
+        std::copy(t, t + out.size(), out.begin());
         return out;
     }
 

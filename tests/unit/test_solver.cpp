@@ -125,7 +125,7 @@ TEST(Solver, MidpointConservesEnergy2D)
 {
     Harness<2> h(6, 2);
     ASSERT_EQ(h.error, "");
-    double before[5], after[5];
+    double before[unilag::TotalsLayout<2>::size], after[unilag::TotalsLayout<2>::size];
     unilag::totals(h.model, before);
     unilag::Midpoint<2, unilag::PhysicsHydro> midpoint(h.op);
     for (int step = 0; step < 5; ++step)
