@@ -40,7 +40,8 @@ template <int D> AngularMomentum<D> angularMomentum(const std::vector<double>& t
         x2 += xc[d] * xc[d];
         v2 += vc[d] * vc[d];
     }
-    const double cross[3] = {xc[1] * vc[2] - xc[2] * vc[1], xc[2] * vc[0] - xc[0] * vc[2], xc[0] * vc[1] - xc[1] * vc[0]};
+    const double cross[3] = {xc[1] * vc[2] - xc[2] * vc[1], xc[2] * vc[0] - xc[0] * vc[2],
+                             xc[0] * vc[1] - xc[1] * vc[0]};
     for (int k = 0; k < T::NL; ++k)
         a.L[k] = t[T::angular + k] - M * cross[T::NL == 1 ? 2 : k];
     a.scale = std::sqrt(std::max(0.0, t[T::secondMoment] - M * x2) * std::max(0.0, t[T::kinetic] - M * v2));
