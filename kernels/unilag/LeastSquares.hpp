@@ -55,14 +55,17 @@ KOKKOS_INLINE_FUNCTION Vec<D> faceUnitNormal(const MeshView<D>& mesh, const Cons
     return (1.0 / norm(n)) * n;
 }
 
-/*! Limiter of the second-order reconstruction (scene key scheme.limiter). Barth-Jespersen in both bounded forms:
+/*! Limiter of the second-order reconstruction (scene key scheme.limiter). Barth-Jespersen in three bounded forms:
  *  each vertex value stays within the extrema of the cell and its face neighbours (BarthJespersen), and for
- *  VertexBased also of every cell around that vertex (linearity-preserving in the interior, after Kuzmin). */
+ *  VertexBased also of every cell around that vertex (linearity-preserving in the interior, after Kuzmin); NodeFit
+ *  widens the face bounds to the node value of the linear fit over the cells around the vertex only (linearity-
+ *  preserving too, but as tight as the face bounds on mesh-scale noise: the fit averages it out). */
 enum class Limiter
 {
     None,
     BarthJespersen,
-    VertexBased
+    VertexBased,
+    NodeFit
 };
 
 //! How limitedGradientsOf bounds one quantity: what a Limiter means for it (the Q's bounds()).
@@ -71,6 +74,7 @@ enum class Bounds
     Unlimited,      //!< the least-squares gradient
     FaceNeighbours, //!< vertex values within the extrema of the cell and its face neighbours
     Vertex,         //!< ... or of every cell around the vertex
+    NodeFit,        //!< ... or the vertex's value of the linear fit over the cells around it
     CellValue       //!< not reconstructed: gradient 0
 };
 
@@ -79,6 +83,7 @@ KOKKOS_INLINE_FUNCTION constexpr Bounds uniformBounds(Limiter limiter)
 {
     return limiter == Limiter::None          ? Bounds::Unlimited
            : limiter == Limiter::VertexBased ? Bounds::Vertex
+           : limiter == Limiter::NodeFit     ? Bounds::NodeFit
                                              : Bounds::FaceNeighbours;
 }
 
@@ -176,18 +181,17 @@ KOKKOS_INLINE_FUNCTION void addNodeTerm(const Vec<D>& e, const double (&wj)[NQ],
     }
 }
 
-/*! At a boundary node without mirror images the cells lie on one side of the node, and the extrema of their values
- *  do not bound a linear field's value there: vertex bounds clipped linear fields at every such vertex (a spinning
- *  elastic ring kept 78% of its kinetic energy over half a turn; docs/gpr-model.md 3.11). Widens each quantity's
- *  extrema by the node value of the weighted linear fit over the node's cells, min_{c,b} sum w (a - c - b.e)^2,
- *  exact for a linear field. Skipped where the cells do not span D directions (a corner node with one cell). */
-template <int D, int NQ>
-KOKKOS_INLINE_FUNCTION void widenByNodeFit(double (&s)[NodeSumLayout<D, NQ, true>::ncol], int nFit)
+/*! The node value of each fitted quantity's weighted linear fit over the node's cells (and images) from its sums s,
+ *  min_{c,b} sum w (a - c - b.e)^2: exact for a linear field. False where the cells do not span D directions (a
+ *  corner node with one cell). */
+template <int D, int NQ, bool PerVertex>
+KOKKOS_INLINE_FUNCTION bool nodeFitValues(const double (&s)[NodeSumLayout<D, NQ, PerVertex>::ncol], int nFit,
+                                          double (&atNode)[NQ])
 {
-    using L = NodeSumLayout<D, NQ, true>;
+    using L = NodeSumLayout<D, NQ, PerVertex>;
     const double s0 = s[L::s0];
     if (!(s[L::count] > D) || !(s0 > 0.0))
-        return;
+        return false;
     Vec<D> mean; // S1 / S0
     for (int a = 0; a < D; ++a)
         mean[a] = s[L::s1 + a] / s0;
@@ -201,7 +205,7 @@ KOKKOS_INLINE_FUNCTION void widenByNodeFit(double (&s)[NodeSumLayout<D, NQ, true
         }
     const double det = determinant(C), scale = trace / D;
     if (!(det > 1e-10 * (D == 2 ? scale * scale : scale * scale * scale)))
-        return;
+        return false;
     for (int q = 0; q < NQ; ++q) // to NQ, not nFit: a compile-time trip count keeps s in registers on a GPU
     {
         if (q >= nFit)
@@ -214,9 +218,43 @@ KOKKOS_INLINE_FUNCTION void widenByNodeFit(double (&s)[NodeSumLayout<D, NQ, true
         double c = t[1];
         for (int a = 0; a < D; ++a)
             c -= s[L::s1 + a] * b[a];
-        const double atNode = t[0] + c / s0;
-        s[L::lo + q] = lesser(s[L::lo + q], atNode);
-        s[L::hi + q] = greater(s[L::hi + q], atNode);
+        atNode[q] = t[0] + c / s0;
+    }
+    return true;
+}
+
+/*! The per-vertex bounds (columns lo, hi of s, which hold the extrema of the node's cells and images) of the
+ *  quantities bounded by Vertex or NodeFit. openBoundary: a boundary node without mirror images, whose cells lie on
+ *  one side of it, so that their extrema do not bound a linear field's value there: Vertex bounds are widened by the
+ *  node fit (before, they clipped linear fields at every such vertex: a spinning elastic ring kept 78% of its
+ *  kinetic energy over half a turn; docs/gpr-model.md 3.11). NodeFit bounds are the node fit alone, clamped to the
+ *  extrema inside (a least-squares fit may overshoot its data; so NodeFit stays within Vertex's bounds); where no fit
+ *  exists they are empty, which leaves the face bounds. */
+template <int D, class Q>
+KOKKOS_INLINE_FUNCTION void nodeBounds(const Q& quantities, Limiter limiter, bool openBoundary, int nFit,
+                                       double (&s)[NodeSumLayout<D, Q::nq, true>::ncol])
+{
+    using L = NodeSumLayout<D, Q::nq, true>;
+    double atNode[Q::nq];
+    const bool fitted = nodeFitValues<D, Q::nq, true>(s, nFit, atNode);
+    for (int q = 0; q < Q::nq; ++q)
+    {
+        if (q >= nFit)
+            continue;
+        const Bounds bounds = quantities.bounds(limiter, q);
+        double& lo = s[L::lo + q];
+        double& hi = s[L::hi + q];
+        if (bounds == Bounds::Vertex && openBoundary && fitted)
+        {
+            lo = lesser(lo, atNode[q]);
+            hi = greater(hi, atNode[q]);
+        }
+        else if (bounds == Bounds::NodeFit)
+        {
+            const double v = !fitted ? 0.0 : openBoundary ? atNode[q] : greater(lo, lesser(hi, atNode[q]));
+            lo = fitted ? v : 1e300;
+            hi = fitted ? v : -1e300;
+        }
     }
 }
 
@@ -224,7 +262,7 @@ KOKKOS_INLINE_FUNCTION void widenByNodeFit(double (&s)[NodeSumLayout<D, NQ, true
  *  are not read), the images across the mirroring planes through the node included. */
 template <int D, class Q, bool PerVertex>
 void nodeSums(const MeshView<D>& mesh, const Q& quantities, const CellGeometry& geom, const ConstField& x,
-              const Kokkos::View<double**, MemSpace>& sums, bool hasBc, int nFit)
+              const Kokkos::View<double**, MemSpace>& sums, bool hasBc, Limiter limiter, int nFit)
 {
     constexpr int NV = D + 1;
     constexpr int NQ = Q::nq;
@@ -289,8 +327,7 @@ void nodeSums(const MeshView<D>& mesh, const Q& quantities, const CellGeometry& 
             }
         }
         if constexpr (PerVertex)
-            if (boundaryNode && nPlanes == 0 && mesh.onBoundary(r))
-                widenByNodeFit<D, NQ>(s, fitted);
+            nodeBounds<D>(quantities, limiter, boundaryNode && nPlanes == 0 && mesh.onBoundary(r), fitted, s);
         for (int c = 0; c < L::ncol; ++c)
             sums(r, c) = s[c];
     };
@@ -393,7 +430,7 @@ KOKKOS_INLINE_FUNCTION void limitCellGradients(const MeshView<D>& mesh, const Q&
             vhi[k] = q == BQ ? pmax[k] : wmax[q];
             vlo[k] = q == BQ ? pmin[k] : wmin[q];
             if constexpr (PerVertex)
-                if (bounds == Bounds::Vertex)
+                if (bounds == Bounds::Vertex || bounds == Bounds::NodeFit)
                 {
                     vhi[k] = greater(vhi[k], vmax[k][q]);
                     vlo[k] = lesser(vlo[k], vmin[k][q]);
@@ -511,8 +548,9 @@ void limitedGradientsOf(const MeshView<D>& mesh, const Q& quantities, const Cell
     int nFit = 0;           // quantities 0 .. nFit-1 are fitted; those after keep their cell values (Q's bounds)
     for (int q = 0; q < Q::nq; ++q)
     {
-        perVertex = perVertex || quantities.bounds(limiter, q) == Bounds::Vertex;
-        if (quantities.bounds(limiter, q) != Bounds::CellValue)
+        const Bounds bounds = quantities.bounds(limiter, q);
+        perVertex = perVertex || bounds == Bounds::Vertex || bounds == Bounds::NodeFit;
+        if (bounds != Bounds::CellValue)
             nFit = q + 1;
     }
     // Without vertex bounds the node sums carry no extrema and the cells no per-vertex arrays (NV x NQ x 2 doubles in
@@ -523,13 +561,13 @@ void limitedGradientsOf(const MeshView<D>& mesh, const Q& quantities, const Cell
     if (perVertex)
     {
         auto sums = work.rows(mesh.nNodes, NodeSumLayout<D, Q::nq, true>::ncol);
-        nodeSums<D, Q, true>(mesh, quantities, geom, x, sums, hasBc, nFit);
+        nodeSums<D, Q, true>(mesh, quantities, geom, x, sums, hasBc, limiter, nFit);
         gradientsFromNodeSums<D, Q, true>(mesh, quantities, geom, x, sums, grad, hasBc, limiter, nFit);
     }
     else
     {
         auto sums = work.rows(mesh.nNodes, NodeSumLayout<D, Q::nq, false>::ncol);
-        nodeSums<D, Q, false>(mesh, quantities, geom, x, sums, hasBc, nFit);
+        nodeSums<D, Q, false>(mesh, quantities, geom, x, sums, hasBc, limiter, nFit);
         gradientsFromNodeSums<D, Q, false>(mesh, quantities, geom, x, sums, grad, hasBc, limiter, nFit);
     }
 }

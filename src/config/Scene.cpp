@@ -319,6 +319,7 @@ void readScheme(ConfigNode& root, Scene& s)
     s.order = int(sch.integer("order", s.order, 1, 2));
     const std::vector<std::pair<std::string, Limiter>> limiters = {{"barth_jespersen", Limiter::BarthJespersen},
                                                                     {"vertex_based", Limiter::VertexBased},
+                                                                    {"node_fit", Limiter::NodeFit},
                                                                     {"none", Limiter::None}};
     s.limiter = sch.option<Limiter>("limiter", "barth_jespersen", limiters);
     if (sch.has("pressure_limiter"))

@@ -262,7 +262,7 @@ add_test(NAME spinning_ring COMMAND ${PYTHON} ${SCRIPTS}/spinning_ring.py ${UNIL
 set_tests_properties(spinning_ring PROPERTIES LABELS regression PROCESSORS 2)
 # vertex_based keeps a linear field whole at boundary vertices too: one step of the spinning ring (its velocity is
 # linear) with vertex_based gives the unlimited step's velocities and node positions to 1e-12 (measured 1.5e-15;
-# before the node fit widened the bounds of boundary nodes without mirror images, LeastSquares.hpp widenByNodeFit,
+# before the node fit widened the bounds of boundary nodes without mirror images, LeastSquares.hpp nodeBounds,
 # 1,828 of its 1,920 cells differed, the velocity by up to 6.6e-4 of the rim speed).
 add_test(NAME linear_at_boundary COMMAND ${PYTHON} ${SCRIPTS}/spinning_ring.py ${UNILAG} ${SCENES}/spinning_ring.yaml
          ${WORK}/linear_at_boundary --linear)

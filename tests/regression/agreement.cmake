@@ -106,7 +106,7 @@ set_tests_properties(impact2d_agree PROPERTIES FIXTURES_REQUIRED impact2d LABELS
 # both 39 steps: 0.47 apart), in the step count (2D hydro, 75 vs 79 steps), or in the datasets written (3D heat vs
 # elastic, both 34 steps).
 # Free surfaces across ranks: the floor on the corner matrices at traction nodes (Geometry.hpp freeSurfaceFloor) and
-# the vertex bounds' node fit at boundary nodes (LeastSquares.hpp widenByNodeFit) where the partition cuts a free
+# the vertex bounds' node fit at boundary nodes (LeastSquares.hpp nodeBounds) where the partition cuts a free
 # boundary: the spinning ring at order 2 with vertex_based (t = 3, 496 steps) and the free expansion to t = 1, on 1
 # and 3 ranks, bitwise.
 foreach(np 1 3)

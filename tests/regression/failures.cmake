@@ -20,7 +20,7 @@ add_test(NAME error_mesh_undefined_node COMMAND bash ${SCRIPTS}/expect_error.sh 
          "undefined_node41.msh: line 55: element 6 refers to node 9, which .Nodes does not define"
          -- ${UNILAG} run ${SCENES}/error_mesh_undefined_node41.yaml)
 add_test(NAME error_limiter COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err7
-         "sedov2d.yaml: key 'scheme.limiter': 'minmod' is not one of: barth_jespersen, vertex_based, none"
+         "sedov2d.yaml: key 'scheme.limiter': 'minmod' is not one of: barth_jespersen, vertex_based, node_fit, none"
          -- ${UNILAG} run ${INPUTS}/sedov2d.yaml --set scheme.limiter=minmod)
 # scheme.pressure_limiter bounds a reconstructed pressure: with reconstruct: velocity there is none.
 add_test(NAME error_pressure_limiter COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err8

@@ -13,7 +13,7 @@ Every run: --check (mass, momentum, energy, node balance), and summary.json's an
 to the dumps' to 1e-9.
 --linear instead: one step with scheme.limiter vertex_based gives the unlimited step's cell velocities and node
 positions to 1e-12 of the rim speed and radius (the initial velocity is linear, which the vertex bounds must keep
-whole at the free boundaries' vertices too: LeastSquares.hpp widenByNodeFit)."""
+whole at the free boundaries' vertices too: LeastSquares.hpp nodeBounds)."""
 import glob
 import json
 import math
