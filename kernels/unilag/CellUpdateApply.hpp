@@ -203,4 +203,14 @@ LO flagInadmissible(const MeshView<D>& mesh, const ConstField& stateNew, const C
     return marked;
 }
 
+//! The fallback's last resort: marks every cell (owned and ghost) in flags; returns how many owned ones were not.
+inline LO flagAll(const Field& flags, LO nOwnedCells)
+{
+    LO unmarked = 0;
+    auto count = KOKKOS_LAMBDA(const LO i, LO& n) { n += flags(i, 0) == 0.0 ? 1 : 0; };
+    Kokkos::parallel_reduce("unilag::gpr::count_unflagged", range(nOwnedCells), count, unmarked);
+    Kokkos::deep_copy(flags, 1.0);
+    return unmarked;
+}
+
 } // namespace unilag

@@ -154,6 +154,16 @@ template <int D, class P> class GprOperator
         return long(count[0]);
     }
 
+    /*! The fallback's last resort: every cell first order for the rest of this step, which then fails only where a
+     *  first-order step would. Returns how many cells were not marked yet, over all ranks. Collective. */
+    long markAllFallback()
+    {
+        double count[1] = {double(flagAll(md_.write("first_order"), md_.m.nOwnedCells))};
+        mpi::allSum(md_.comm, count);
+        fallbackMarked_ = true;
+        return long(count[0]);
+    }
+
     void halo(const std::string& field)
     {
         ScopedTimer timer(md_.timers, Phase::Halo);

@@ -75,14 +75,16 @@ template <int D, class P> class GprSystem : public TimeSystem
 
     /*! One attempt at [t, t + dt]. Order 2: where the update leaves cells inadmissible (a negative internal energy,
      *  an inverted cell), those cells fall back to first order for the rest of the step, the rates at t^n are
-     *  recomputed and the step is tried again at the same dt, up to maxFallbackRounds times, before the time loop
-     *  halves dt (docs/gpr-model.md 2.5, "A posteriori fallback"). */
+     *  recomputed and the step is tried again at the same dt, up to maxFallbackRounds times, then once with every
+     *  cell at first order, before the time loop halves dt (docs/gpr-model.md 2.5, "A posteriori fallback"). */
     bool attemptStep(double t, double dt, int attempt, int& iterations) override
     {
         bool ok = integrate(t, dt, attempt > 0);
-        for (int round = 0; !ok && md_.order2 && stage_.failure.empty() && round < maxFallbackRounds; ++round)
+        for (int round = 0; !ok && md_.order2 && stage_.failure.empty() && round <= maxFallbackRounds; ++round)
         {
-            const long marked = op_.markFallback();
+            // A cold gas fails cell by cell where each fallback changes its neighbours' node velocities (Noh with
+            // vertex_based, t = 0): after maxFallbackRounds the whole step goes to first order.
+            const long marked = round < maxFallbackRounds ? op_.markFallback() : op_.markAllFallback();
             if (marked == 0)
                 break;
             fallbackCells_ += marked;
