@@ -40,7 +40,8 @@ template <int D, class P>
 BalanceRates<D> GprOperator<D, P>::balanceOf(const SubcellForces<D, P>& forces, const Reconstruction<D>& heatRec)
 {
     ScopedTimer timer(md_.timers, Phase::Check);
-    const NodeBalanceRates<D> local = nodeBalance<D, P>(forces, md_.bc, balanceNodes_, balanceScratch_);
+    NodeBalanceRates<D> local = nodeBalance<D, P>(forces, md_.bc, balanceNodes_, balanceScratch_);
+    worstImbalance<D>(balanceNodes_, balanceScratch_, 1e-100 * mpi::allMax(md_.comm, local.maxForce), local);
     BalanceRates<D> r;
     double sums[D + 3];
     for (int d = 0; d < D; ++d)

@@ -49,11 +49,13 @@ template <int D, class P> void mechanics(Launchers& out)
     keep(out, &subcellForces<D, P>);
     keep(out, &storeRates<D, P>);
     keep(out, &nodeBalance<D, P>);
+    keep(out, &worstImbalance<D>);
     keep(out, &updateCells<D, P>);
     keep(out, &updateCellsFromStages<D, P, 1>);
     keep(out, &updateCellsFromStages<D, P, 2>);
     keep(out, &updateCellsFromStages<D, P, 3>);
     keep(out, &flagInadmissible<D, P>);
+    keep(out, &flagAll);
     keep(out, &limitedGradients<D, P>);
     keep(out, &filterEntropy<D, P>);
     keep(out, &epsGradientFromFaces<D>);
