@@ -20,6 +20,7 @@ HERE = os.path.dirname(os.path.abspath(__file__))
 SCENE = os.path.join(HERE, "..", "tests", "scenes", "spinning_ring.yaml")
 SCHEMES = [("order 1", ["scheme.order=1"]),
            ("order 2, barth_jespersen", ["scheme.limiter=barth_jespersen"]),
+           ("order 2, node_fit", ["scheme.limiter=node_fit"]),
            ("order 2, vertex_based", ["scheme.limiter=vertex_based"]),
            ("order 2, none", ["scheme.limiter=none"])]
 

@@ -15,15 +15,15 @@
  *     the second-order Kidder shell (polar mesh) jets where its outer surface meets a symmetry plane.
  *   - Limiter (scene key scheme.limiter; measurements in the README, "Limiter"): Barth-Jespersen at the vertices,
  *     per component, in three bounded forms.
- *       - BarthJespersen (the default): the extrema over the cell and its face neighbours bound every vertex value
+ *       - BarthJespersen: the extrema over the cell and its face neighbours bound every vertex value
  *         (no new extrema, first order at shocks: the sharpest 2D Sedov shock). The price: linear fields are clipped
  *         at many vertices (most of them in 3D), so smooth regions get less than full second order.
  *       - VertexBased: the extrema over every cell around the vertex bound it as well (after Kuzmin), which keeps
  *         linear fields whole (at boundary nodes without mirror images with bounds widened by the node's own
  *         linear fit: LeastSquares.hpp nodeBounds): the choice for smooth and elastic flows (the plate).
- *       - NodeFit: the face bounds widened to the node value of the linear fit over the cells around the vertex
- *         (clamped to their extrema): linear fields kept whole as by VertexBased, mesh-scale noise damped nearly as
- *         by the face bounds (the fit averages it out; unit test NodeFitLimiter).
+ *       - NodeFit (the scenes' default): the face bounds widened to the node value of the linear fit over the cells
+ *         around the vertex (clamped to their extrema): linear fields kept whole as by VertexBased, mesh-scale noise
+ *         damped nearly as by the face bounds (the fit averages it out; unit test NodeFitLimiter).
  *     Limiter::None skips the limiter (shock-free flows only). Bounds over the whole node-neighbour stencil were
  *     measured and not kept: too weak at the 2D Sedov shock, and the viscous 3D Sedov tangles.
  *   - What is reconstructed (scene key scheme.reconstruct): all of it, or the velocity alone (Reconstructed), the

@@ -321,7 +321,7 @@ void readScheme(ConfigNode& root, Scene& s)
                                                                     {"vertex_based", Limiter::VertexBased},
                                                                     {"node_fit", Limiter::NodeFit},
                                                                     {"none", Limiter::None}};
-    s.limiter = sch.option<Limiter>("limiter", "barth_jespersen", limiters);
+    s.limiter = sch.option<Limiter>("limiter", "node_fit", limiters);
     if (sch.has("pressure_limiter"))
         s.pressureLimiter = sch.option<Limiter>("pressure_limiter", "", limiters);
     s.reconstruct = sch.option<Reconstructed>("reconstruct", "all",

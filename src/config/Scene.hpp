@@ -161,7 +161,7 @@ struct Scene
     double picardTolerance = 1e-10; //!< max_i |sigma^{l+1} - sigma^l|_F / (rho_i a_i^2) to stop the Picard loop
     int picardMaxIterations = 50;   //!< cap: the step is cut and retried when it is reached
     int order = 1;                  //!< 1: first order; 2: limited linear reconstruction + midpoint predictor-corrector
-    Limiter limiter = Limiter::BarthJespersen; //!< order 2 only
+    Limiter limiter = Limiter::NodeFit; //!< order 2 only
     std::optional<Limiter> pressureLimiter; //!< order 2: the pressure's and shear stress's own (else limiter)
     Reconstructed reconstruct = Reconstructed::All; //!< order 2 only: every quantity, or the velocity alone
     CornerLoad cornerLoad = CornerLoad::Lumped;     //!< order 2 only: how the traction loads the corners
