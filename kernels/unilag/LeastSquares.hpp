@@ -235,6 +235,14 @@ KOKKOS_INLINE_FUNCTION void nodeBounds(const Q& quantities, Limiter limiter, boo
                                        double (&s)[NodeSumLayout<D, Q::nq, true>::ncol])
 {
     using L = NodeSumLayout<D, Q::nq, true>;
+    bool needed = false; // the fit (a D x D solve per quantity) only where some bound takes it
+    for (int q = 0; q < Q::nq; ++q)
+    {
+        const Bounds bounds = quantities.bounds(limiter, q);
+        needed = needed || (q < nFit && (bounds == Bounds::NodeFit || (bounds == Bounds::Vertex && openBoundary)));
+    }
+    if (!needed)
+        return;
     double atNode[Q::nq];
     const bool fitted = nodeFitValues<D, Q::nq, true>(s, nFit, atNode);
     for (int q = 0; q < Q::nq; ++q)
@@ -271,6 +279,7 @@ void nodeSums(const MeshView<D>& mesh, const Q& quantities, const CellGeometry& 
     auto node = KOKKOS_LAMBDA(const LO r)
     {
         const int fitted = nFit; // captured here: nvcc refuses a lambda's first capture inside `if constexpr`
+        const Limiter bounded = limiter; // the same
         double s[L::ncol], ref[NQ], wj[NQ];
         for (int c = 0; c < L::ncol; ++c)
             s[c] = 0.0;
@@ -327,7 +336,7 @@ void nodeSums(const MeshView<D>& mesh, const Q& quantities, const CellGeometry& 
             }
         }
         if constexpr (PerVertex)
-            nodeBounds<D>(quantities, limiter, boundaryNode && nPlanes == 0 && mesh.onBoundary(r), fitted, s);
+            nodeBounds<D>(quantities, bounded, boundaryNode && nPlanes == 0 && mesh.onBoundary(r), fitted, s);
         for (int c = 0; c < L::ncol; ++c)
             sums(r, c) = s[c];
     };
