@@ -184,11 +184,11 @@ KOKKOS_INLINE_FUNCTION void addNodeTerm(const Vec<D>& e, const double (&wj)[NQ],
 /*! The node value of each fitted quantity's weighted linear fit over the node's cells (and images) from its sums s,
  *  min_{c,b} sum w (a - c - b.e)^2: exact for a linear field. False where the cells do not span D directions (a
  *  corner node with one cell). */
-template <int D, int NQ, bool PerVertex>
-KOKKOS_INLINE_FUNCTION bool nodeFitValues(const double (&s)[NodeSumLayout<D, NQ, PerVertex>::ncol], int nFit,
+template <int D, int NQ>
+KOKKOS_INLINE_FUNCTION bool nodeFitValues(const double (&s)[NodeSumLayout<D, NQ, true>::ncol], int nFit,
                                           double (&atNode)[NQ])
 {
-    using L = NodeSumLayout<D, NQ, PerVertex>;
+    using L = NodeSumLayout<D, NQ, true>;
     const double s0 = s[L::s0];
     if (!(s[L::count] > D) || !(s0 > 0.0))
         return false;
@@ -244,7 +244,7 @@ KOKKOS_INLINE_FUNCTION void nodeBounds(const Q& quantities, Limiter limiter, boo
     if (!needed)
         return;
     double atNode[Q::nq];
-    const bool fitted = nodeFitValues<D, Q::nq, true>(s, nFit, atNode);
+    const bool fitted = nodeFitValues<D, Q::nq>(s, nFit, atNode);
     for (int q = 0; q < Q::nq; ++q)
     {
         if (q >= nFit)

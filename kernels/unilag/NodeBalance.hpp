@@ -82,7 +82,8 @@ void worstImbalance(const View<const LO*>& nodes, const Field& out, double force
     rates.worstNode = node;
 }
 
-/*! F_r and its expected value at the nodes in `nodes` (owned), per node into `out` (NodeBalanceLayout), then reduced.
+/*! F_r and its expected value at the nodes in `nodes` (owned), per node into `out` (NodeBalanceLayout), then summed,
+ *  with the largest force; the worst imbalance is worstImbalance's, once the caller has the floor (over all ranks).
  *  Non-boundary nodes add nothing to the sums but their imbalance. `forces` must be those of the last update. */
 template <int D, class P>
 NodeBalanceRates<D> nodeBalance(const SubcellForces<D, P>& forces, const BoundaryView& bc, const View<const LO*>& nodes,
@@ -166,7 +167,6 @@ NodeBalanceRates<D> nodeBalance(const SubcellForces<D, P>& forces, const Boundar
     };
     minReduce<1>("unilag::check::node_balance_force", count, negatedScale, largest);
     rates.maxForce = count > 0 ? -largest[0] : 0.0;
-    worstImbalance<D>(nodes, out, 0.0, rates);
     return rates;
 }
 

@@ -43,15 +43,19 @@ struct BalanceFixture
     }
 };
 
-//! The balance of the model's current forces (state, aux and geometry at t^n; node velocities v) at every owned node.
-unilag::NodeBalanceRates<D> balance(const unilag_test::SolverHarness<D>& hs, const unilag::ConstField& v)
+/*! The balance of the model's current forces (state, aux and geometry at t^n; node velocities v) at every owned node,
+ *  the worst imbalance over the nodes whose forces exceed floorShare of the largest (the solver's 1e-100). */
+unilag::NodeBalanceRates<D> balance(const unilag_test::SolverHarness<D>& hs, const unilag::ConstField& v,
+                                    double floorShare = 1e-100)
 {
     const auto& md = hs.model;
     const auto forces = unilag::subcellForces<D, P>(md.m, md.read("state"), md.aux, unilag::ConstField(), md.geom, v);
     unilag::View<LO*> nodes("nodes", md.m.nOwnedNodes);
     Kokkos::parallel_for(unilag::range(md.m.nOwnedNodes), KOKKOS_LAMBDA(const LO r) { nodes(r) = r; });
     unilag::Field out("out", md.m.nOwnedNodes, unilag::NodeBalanceLayout<D>::ncomp);
-    return unilag::nodeBalance<D, P>(forces, md.bc, nodes, out);
+    auto rates = unilag::nodeBalance<D, P>(forces, md.bc, nodes, out);
+    unilag::worstImbalance<D>(nodes, out, floorShare * rates.maxForce, rates);
+    return rates;
 }
 
 //! v_node with one component of one node changed by dv.
@@ -107,6 +111,10 @@ TEST(NodeBalance, HoldsAfterAStepAndCatchesEachFault)
             const auto offOpen = balance(hs, perturbed(hs, open, 0, dv));
             EXPECT_EQ(offOpen.worstNode, open);
             EXPECT_GT(offOpen.maxImbalance, 1e-8);
+            // forces at or below the floor are not judged: with the floor at the largest force, no node is
+            const auto floored = balance(hs, perturbed(hs, interior, 0, dv), 1.0);
+            EXPECT_EQ(floored.worstNode, -1);
+            EXPECT_EQ(floored.maxImbalance, 0.0);
 
             // an imposed pressure other than the one the nodes were solved with shows at the open side
             auto& md = hs.model;
