@@ -106,6 +106,23 @@ KOKKOS_INLINE_FUNCTION void gatherNodes(const MeshView<D>& m, const ConstField& 
     }
 }
 
+/*! \brief Shape quality of cell i: its insphere diameter over that of the regular simplex whose edges are the
+ *  cell's longest, sqrt(D (D + 1) / 2) h_i / l_max: 1 for a regular simplex, towards 0 for a flat one, whose
+ *  time step and shock heating go like 1 / quality (docs/sedov.md, session 29). `insphere`: CellGeometry::length. */
+template <int D>
+KOKKOS_INLINE_FUNCTION double shapeQuality(const Vec<D> (&xi)[D + 1], double insphere)
+{
+    double longest2 = 0.0;
+    for (int a = 0; a < D + 1; ++a)
+        for (int b = a + 1; b < D + 1; ++b)
+        {
+            const Vec<D> e = xi[b] - xi[a];
+            const double e2 = dot(e, e);
+            longest2 = e2 > longest2 ? e2 : longest2;
+        }
+    return Kokkos::Experimental::sqrt(0.5 * D * (D + 1) / longest2) * insphere;
+}
+
 //! Per-cell geometry of the current configuration.
 struct CellGeometry
 {

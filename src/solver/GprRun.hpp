@@ -196,6 +196,24 @@ int selfCheck(const GprModel<D, P>& md, const GprSystem<D, P>& sys, const Conser
     return reportCheck(fails, md.rank == 0);
 }
 
+//! The smallest shapeQuality over the cells of every rank, on the current positions. Collective.
+template <int D, class P> double minShapeQuality(const GprModel<D, P>& md)
+{
+    const MeshView<D> mesh = md.m;
+    auto x = md.read("x");
+    auto length = md.geom.length;
+    auto quality = KOKKOS_LAMBDA(const LO i, double(&acc)[1])
+    {
+        Vec<D> xi[D + 1];
+        gatherNodes<D>(mesh, x, i, xi);
+        const double q = shapeQuality<D>(xi, length(i));
+        acc[0] = q < acc[0] ? q : acc[0];
+    };
+    double q[1];
+    minReduce<1>("unilag::check::shape_quality", mesh.nOwnedCells, quality, q);
+    return mpi::allMin(md.comm, q[0]);
+}
+
 //! The angular momentum about the centre of mass of totals() as JSON: its z component in 2D, [x, y, z] in 3D.
 template <int D> std::string angularText(const std::vector<double>& totals)
 {
@@ -208,7 +226,7 @@ template <int D> std::string angularText(const std::vector<double>& totals)
 
 template <int D, class P>
 void writeSummary(const GprModel<D, P>& md, const GprSystem<D, P>& sys, const RunOptions& options, const LoopResult& r,
-                  const Conservation& c, const ExactErrors& x, const std::vector<double>& radii)
+                  const Conservation& c, const ExactErrors& x, const std::vector<double>& radii, double initialQuality)
 {
     const auto& dm = *md.mesh;
     const double cellSteps = double(dm.nGlobalCells) * double(r.state.steps) / std::max(r.wallSeconds, 1e-300);
@@ -233,6 +251,8 @@ void writeSummary(const GprModel<D, P>& md, const GprSystem<D, P>& sys, const Ru
     s.object("boundary_impulse", impulse);
     s.number("boundary_work", b.work).number("wall_work", b.passiveWork).number("boundary_heat", b.heat);
     s.number("max_node_force_imbalance", b.maxImbalance).number("volume_identity_defect", volumeIdentityDefect(md));
+    const double finalQuality = minShapeQuality(md);
+    s.object("min_shape_quality", {{"initial", jsonNumber(initialQuality)}, {"final", jsonNumber(finalQuality)}});
     if (x.l1 >= 0.0)
         s.number("l1_density_error", x.l1);
     if (x.shock >= 0.0)
@@ -302,11 +322,12 @@ int runGpr(const Scene& scene, std::shared_ptr<DistributedMesh> mesh, const RunO
         sys.openOutput(scene.outputDirectory, from.dumps);
     if (!restart)
         sys.start();
+    const double initialQuality = minShapeQuality(md);
     const LoopResult r = runTimeLoop(sys, timeControl(scene, options), md.comm, from);
     const Conservation c = conservation<D>(r.initialTotals, r.finalTotals, sys.balance());
     const ExactErrors x = r.failure.empty() ? exactErrors(md, r.state.t) : ExactErrors{};
     const std::vector<double> radii = boundaryRadii(md);
-    writeSummary(md, sys, options, r, c, x, radii);
+    writeSummary(md, sys, options, r, c, x, radii, initialQuality);
     if (!r.failure.empty())
     {
         if (md.rank == 0)

@@ -6,6 +6,7 @@
 
 #include <cmath>
 #include <random>
+#include <type_traits>
 
 #include "unilag/Hydro.hpp"
 #include "unilag/Sym3.hpp"
@@ -139,4 +140,30 @@ TEST(TimeStepLength, FlatTetrahedraBoundTheRelaxationRate)
         }
     }
     EXPECT_GT(bound, 1000); // most of these shapes are flat enough to be bound
+}
+
+// shapeQuality (the summary's min_shape_quality): 1 on the regular triangle and tetrahedron at any size, the
+// insphere over the longest edge on others, towards 0 on flat cells.
+TEST(TimeStepLength, ShapeQualityIsOneOnRegularSimplices)
+{
+    auto quality = [](const auto& x) {
+        constexpr int D = std::extent<std::remove_reference_t<decltype(x)>>::value - 1;
+        const unilag::Simplex<D> s(x);
+        return unilag::shapeQuality<D>(x, s.charLength());
+    };
+    const double r3 = std::sqrt(3.0);
+    const Vec<2> triangle[3] = {point<2>({0, 0}), point<2>({2, 0}), point<2>({1, r3})};
+    EXPECT_NEAR(quality(triangle), 1.0, 1e-14);
+    const Vec<3> tet[4] = {point<3>({1, 1, 1}), point<3>({-1, 1, -1}), point<3>({1, -1, -1}), point<3>({-1, -1, 1})};
+    EXPECT_NEAR(quality(tet), 1.0, 1e-14);
+    // the right isosceles triangle: insphere diameter 2 - sqrt(2) over sqrt(2) / sqrt(3) (the regular triangle's
+    // with edge sqrt(2))
+    const Vec<2> right[3] = {point<2>({0, 0}), point<2>({1, 0}), point<2>({0, 1})};
+    EXPECT_NEAR(quality(right), (2.0 - std::sqrt(2.0)) * r3 / std::sqrt(2.0), 1e-14);
+    // a sliver: two crossed edges of length 2 pressed to 2e-3 apart; its quality goes with that gap
+    const Vec<3> sliver[4] = {point<3>({1, 0, 1e-3}), point<3>({-1, 0, 1e-3}), point<3>({0, 1, -1e-3}),
+                              point<3>({0, -1, -1e-3})};
+    const double q = quality(sliver);
+    EXPECT_GT(q, 1e-3);
+    EXPECT_LT(q, 5e-3);
 }
