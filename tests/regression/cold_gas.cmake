@@ -108,3 +108,19 @@ endforeach()
 add_test(NAME piston_orientation COMMAND ${PYTHON} ${PROJECT_SOURCE_DIR}/apps/shock_orientation_study.py ${UNILAG}
          ${WORK}/piston_orientation.csv 0.005 --check 1.5 1.0)
 set_tests_properties(piston_orientation PROPERTIES LABELS "gpr;regression")
+
+# A strong planar shock in 3D on unstructured tetrahedra (tests/scenes/piston3d_tets.yaml, gamma 1.4, 8.9k cells,
+# t = 1; tests/scripts/piston3d.py): the shocked state's volume-weighted means within 2% (velocity 1%), the front
+# within a cell, and the pressure scatter behind the shock at most 0.14. Measured, density (6) / pressure (1.2) /
+# eps (0.5) / scatter: order 1 5.987 / 1.1972 / 0.5040 / 0.1287, order 2 6.000 / 1.1996 / 0.5041 / 0.1245. The
+# scatter is what the tetrahedra's nodes cannot relax (docs/sedov.md, session 29): it stays, 12% far behind the shock.
+foreach(order 1 2)
+  add_test(NAME piston3d_tets_o${order}_run COMMAND ${UNILAG} run ${SCENES}/piston3d_tets.yaml --quiet --check
+           --set scheme.order=${order} --output ${WORK}/piston3d_tets_o${order})
+  add_test(NAME piston3d_tets_o${order}_check
+           COMMAND ${PYTHON} ${SCRIPTS}/piston3d.py ${WORK}/piston3d_tets_o${order} 0.14)
+  set_tests_properties(piston3d_tets_o${order}_run PROPERTIES FIXTURES_SETUP piston3d_o${order}
+                       LABELS "gpr;regression")
+  set_tests_properties(piston3d_tets_o${order}_check PROPERTIES FIXTURES_REQUIRED piston3d_o${order}
+                       LABELS "gpr;regression")
+endforeach()
