@@ -61,24 +61,25 @@ template <int D>
 Conservation conservation(const std::vector<double>& initial, const std::vector<double>& final_,
                           const BoundaryBalance<D>& boundary)
 {
+    using T = TotalsLayout<D>;
     const double(&impulse)[D] = boundary.impulse;
     const double work = boundary.work + boundary.heat; // the energy the boundaries gave
     Conservation c;
-    c.mass = std::abs(final_[0] - initial[0]) / initial[0];
+    c.mass = std::abs(final_[T::mass] - initial[T::mass]) / initial[T::mass];
     double dp = 0.0;
     for (int d = 0; d < D; ++d)
-        dp += std::pow(final_[1 + d] - initial[1 + d] - impulse[d], 2);
+        dp += std::pow(final_[T::momentum + d] - initial[T::momentum + d] - impulse[d], 2);
     // relative to the momentum in play: sum m|v|, or for a body nearly at rest sqrt(2 M E), the momentum its
     // energy could give it (the forces whose round-off this measures scale with it)
-    const double momentumScale =
-        std::max(final_[2 + D] + initial[2 + D], std::sqrt(2.0 * initial[0] * std::abs(initial[1 + D])));
+    const double momentumScale = std::max(final_[T::speed] + initial[T::speed],
+                                          std::sqrt(2.0 * initial[T::mass] * std::abs(initial[T::energy])));
     c.momentum = std::sqrt(dp) / std::max(momentumScale, 1e-300);
     // relative to the largest energy in play (a body at rest hit by a piston starts with none)
-    c.energyScale = std::max({std::abs(initial[1 + D]), std::abs(final_[1 + D]), std::abs(work), 1e-300});
-    c.energy = std::abs(final_[1 + D] - initial[1 + D] - work) / c.energyScale;
+    c.energyScale = std::max({std::abs(initial[T::energy]), std::abs(final_[T::energy]), std::abs(work), 1e-300});
+    c.energy = std::abs(final_[T::energy] - initial[T::energy] - work) / c.energyScale;
     const AngularMomentum<D> a0 = angularMomentum<D>(initial), a1 = angularMomentum<D>(final_);
     double dl = 0.0;
-    for (int k = 0; k < TotalsLayout<D>::NL; ++k)
+    for (int k = 0; k < T::NL; ++k)
         dl += std::pow(a1.L[k] - a0.L[k], 2);
     c.angularMomentum = std::sqrt(dl) / std::max({a0.scale, a1.scale, 1e-300});
     return c;
