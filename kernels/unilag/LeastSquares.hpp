@@ -279,7 +279,7 @@ void nodeSums(const MeshView<D>& mesh, const Q& quantities, const CellGeometry& 
     auto node = KOKKOS_LAMBDA(const LO r)
     {
         const int fitted = nFit; // captured here: nvcc refuses a lambda's first capture inside `if constexpr`
-        const Limiter bounded = limiter; // the same
+        const Limiter bounded = limiter; // likewise captured here, for the same reason
         double s[L::ncol], ref[NQ], wj[NQ];
         for (int c = 0; c < L::ncol; ++c)
             s[c] = 0.0;

@@ -290,8 +290,7 @@ GlobalMesh loadMesh(const Scene& scene)
             {
                 gmsh::option::setNumber("Mesh.MeshSizeMin", scene.meshSize);
                 gmsh::option::setNumber("Mesh.MeshSizeMax", scene.meshSize);
-                // Free tetrahedra below gamma 0.6 (gmsh: 0.3) are optimised: flat ones cap the time step and overheat
-                // at shocks (docs/sedov.md, session 29). Set before the .geo, which may choose its own.
+                // before the .geo is read, so that a .geo may choose its own threshold
                 gmsh::option::setNumber("Mesh.OptimizeThreshold", tetOptimizeThreshold);
             }
             gmsh::open(source);
