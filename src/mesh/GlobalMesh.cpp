@@ -11,6 +11,7 @@
 
 #include "config/Scene.hpp"
 #include "mesh/FaceKey.hpp"
+#include "mesh/GmshCrashGuard.hpp"
 #include "mesh/MshCheck.hpp"
 
 namespace unilag
@@ -293,6 +294,7 @@ GlobalMesh loadMesh(const Scene& scene)
                 // before the .geo is read, so that a .geo may choose its own threshold
                 gmsh::option::setNumber("Mesh.OptimizeThreshold", tetOptimizeThreshold);
             }
+            const GmshCrashGuard guard(source);
             gmsh::open(source);
             if (!scene.geometry.empty())
             {

@@ -19,6 +19,10 @@ add_test(NAME error_mesh_missing_z COMMAND bash ${SCRIPTS}/expect_error.sh ${WOR
 add_test(NAME error_mesh_undefined_node COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err_msh4
          "undefined_node41.msh: line 55: element 6 refers to node 9, which .Nodes does not define"
          -- ${UNILAG} run ${SCENES}/error_mesh_undefined_node41.yaml)
+# A .geo gmsh accepts but crashes on (its 2D algorithm 8 in Debian's 4.8.4): one line naming it, exit 2, no output.
+add_test(NAME error_gmsh_crash COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err_gmsh_crash
+         "quadrant_gmsh_crash.geo: gmsh crashed reading or meshing it" -- ${UNILAG} run ${INPUTS}/sedov2d.yaml
+         --set mesh.geometry=${CMAKE_CURRENT_SOURCE_DIR}/meshes/quadrant_gmsh_crash.geo)
 add_test(NAME error_limiter COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err7
          "sedov2d.yaml: key 'scheme.limiter': 'minmod' is not one of: barth_jespersen, vertex_based, node_fit, none"
          -- ${UNILAG} run ${INPUTS}/sedov2d.yaml --set scheme.limiter=minmod)

@@ -1,0 +1,53 @@
+#include "mesh/GmshCrashGuard.hpp"
+
+#include <algorithm>
+#include <array>
+#include <csignal>
+#include <cstring>
+
+#include <unistd.h>
+
+#include "core/Errors.hpp"
+
+namespace unilag
+{
+
+namespace
+{
+
+constexpr std::array<int, 5> guardedSignals{SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT};
+std::array<struct sigaction, guardedSignals.size()> previous;
+
+// The handler may only call async-signal-safe functions: the message is composed before, write(2) prints it.
+char message[1024];
+std::size_t messageLength = 0;
+
+extern "C" void reportGmshCrash(int)
+{
+    [[maybe_unused]] const ssize_t written = ::write(STDERR_FILENO, message, messageLength);
+    ::_exit(ExitInput);
+}
+
+} // namespace
+
+GmshCrashGuard::GmshCrashGuard(const std::string& source)
+{
+    const std::string text = "unilag: error: " + printable(source, 400) +
+                             ": gmsh crashed reading or meshing it (gmsh 4.8 dies on some options it accepts, such as "
+                             "Mesh.Algorithm = 8 in 2D: change the mesh options, or give a .msh meshed elsewhere)\n";
+    messageLength = std::min(text.size(), sizeof(message));
+    std::memcpy(message, text.data(), messageLength);
+    struct sigaction action = {};
+    action.sa_handler = reportGmshCrash;
+    sigemptyset(&action.sa_mask);
+    for (std::size_t s = 0; s < guardedSignals.size(); ++s)
+        sigaction(guardedSignals[s], &action, &previous[s]);
+}
+
+GmshCrashGuard::~GmshCrashGuard()
+{
+    for (std::size_t s = 0; s < guardedSignals.size(); ++s)
+        sigaction(guardedSignals[s], &previous[s], nullptr);
+}
+
+} // namespace unilag
