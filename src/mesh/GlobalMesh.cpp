@@ -45,6 +45,28 @@ double signedMeasure(int dim, const double* a, const double* b, const double* c,
 }
 
 //! The boundary physical groups: their names into m.boundaryNames, and each face's group by the face's key.
+/*! Refuses an entity of the regions that holds elements other than linear simplices (quadrangles from
+ *  Mesh.RecombineAll, second-order triangles from Mesh.ElementOrder = 2): unilag would drop them and leave a hole,
+ *  reported as an unnamed boundary at best. */
+void rejectOtherElements(const std::string& source, int dim, int entity, int cellType)
+{
+    std::vector<int> types;
+    std::vector<std::vector<std::size_t>> tags, nodes;
+    gmsh::model::mesh::getElements(types, tags, nodes, dim, entity);
+    for (std::size_t t = 0; t < types.size(); ++t)
+    {
+        if (types[t] == cellType || tags[t].empty())
+            continue;
+        std::string name;
+        int elementDim = 0, order = 0, nodeCount = 0, primaryNodes = 0;
+        std::vector<double> local;
+        gmsh::model::mesh::getElementProperties(types[t], name, elementDim, order, nodeCount, local, primaryNodes);
+        throw InputError(source + ": element " + std::to_string(tags[t][0]) + " is a " + name + " (and " +
+                         std::to_string(tags[t].size() - 1) + " more): unilag takes linear " +
+                         (dim == 2 ? "triangles" : "tetrahedra") + " only");
+    }
+}
+
 std::map<FaceKey, int> readBoundaryGroups(GlobalMesh& m, const std::unordered_map<std::size_t, int>& index)
 {
     // faces are lines in 2D, triangles in 3D
@@ -145,6 +167,7 @@ void extract(const std::string& source, GlobalMesh& m)
         gmsh::model::getEntitiesForPhysicalGroup(dim, tag, entities);
         for (int e : entities)
         {
+            rejectOtherElements(source, m.dim, e, cellType);
             std::vector<std::size_t> tags, nodes;
             gmsh::model::mesh::getElementsByType(cellType, tags, nodes, e);
             // Orientation: gmsh orients each entity consistently, possibly clockwise. A cell whose sign differs

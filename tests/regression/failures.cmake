@@ -23,6 +23,11 @@ add_test(NAME error_mesh_undefined_node COMMAND bash ${SCRIPTS}/expect_error.sh 
 add_test(NAME error_gmsh_crash COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err_gmsh_crash
          "quadrant_gmsh_crash.geo: gmsh crashed reading or meshing it" -- ${UNILAG} run ${INPUTS}/sedov2d.yaml
          --set mesh.geometry=${CMAKE_CURRENT_SOURCE_DIR}/meshes/quadrant_gmsh_crash.geo)
+# Elements other than linear simplices in a region (here quadrangles beside triangles) are refused by name.
+add_test(NAME error_mixed_elements COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err_mixed_elements
+         "mixed_tri_quad.geo: element [0-9]+ is a Quadrilateral 4 \\(and [0-9]+ more\\): unilag takes linear triangles"
+         -- ${UNILAG} run ${INPUTS}/sedov2d.yaml --set mesh.size=0.1
+         --set mesh.geometry=${CMAKE_CURRENT_SOURCE_DIR}/meshes/mixed_tri_quad.geo)
 add_test(NAME error_limiter COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err7
          "sedov2d.yaml: key 'scheme.limiter': 'minmod' is not one of: barth_jespersen, vertex_based, node_fit, none"
          -- ${UNILAG} run ${INPUTS}/sedov2d.yaml --set scheme.limiter=minmod)
