@@ -4,6 +4,7 @@
 #include <array>
 #include <csignal>
 #include <cstring>
+#include <exception>
 
 #include <unistd.h>
 
@@ -21,11 +22,19 @@ std::array<struct sigaction, guardedSignals.size()> previous;
 // The handler may only call async-signal-safe functions: the message is composed before, write(2) prints it.
 char message[1024];
 std::size_t messageLength = 0;
+std::terminate_handler previousTerminate = nullptr;
 
 extern "C" void reportGmshCrash(int)
 {
     [[maybe_unused]] const ssize_t written = ::write(STDERR_FILENO, message, messageLength);
     ::_exit(ExitInput);
+}
+
+// gmsh also throws from its own threads (a std::string, with Mesh.RandomFactor = 0.5 in 3D): the runtime's
+// terminate handler would print that before SIGABRT reached reportGmshCrash; this one prints the message only.
+void reportGmshTermination()
+{
+    reportGmshCrash(SIGABRT);
 }
 
 } // namespace
@@ -42,10 +51,12 @@ GmshCrashGuard::GmshCrashGuard(const std::string& source)
     sigemptyset(&action.sa_mask);
     for (std::size_t s = 0; s < guardedSignals.size(); ++s)
         sigaction(guardedSignals[s], &action, &previous[s]);
+    previousTerminate = std::set_terminate(reportGmshTermination);
 }
 
 GmshCrashGuard::~GmshCrashGuard()
 {
+    std::set_terminate(previousTerminate);
     for (std::size_t s = 0; s < guardedSignals.size(); ++s)
         sigaction(guardedSignals[s], &previous[s], nullptr);
 }

@@ -14,9 +14,10 @@ namespace unilag
 class GmshCrashGuard
 {
   public:
-    //! Installs the handlers (SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT); source names the file in the message.
+    /*! Installs the handlers (SIGSEGV, SIGBUS, SIGFPE, SIGILL, SIGABRT, and std::terminate for exceptions that
+     *  leave gmsh's threads); source names the file in the message. */
     explicit GmshCrashGuard(const std::string& source);
-    //! Restores the handlers there were before (Open MPI's, for one).
+    //! Restores the handlers there were before (Open MPI's signal handlers, for one).
     ~GmshCrashGuard();
     GmshCrashGuard(const GmshCrashGuard&) = delete;
     GmshCrashGuard& operator=(const GmshCrashGuard&) = delete;
