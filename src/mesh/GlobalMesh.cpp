@@ -44,7 +44,6 @@ double signedMeasure(int dim, const double* a, const double* b, const double* c,
            6.0;
 }
 
-//! The boundary physical groups: their names into m.boundaryNames, and each face's group by the face's key.
 /*! Refuses an entity of the regions that holds elements other than linear simplices (quadrangles from
  *  Mesh.RecombineAll, second-order triangles from Mesh.ElementOrder = 2): unilag would drop them and leave a hole,
  *  reported as an unnamed boundary at best. */
@@ -67,6 +66,7 @@ void rejectOtherElements(const std::string& source, int dim, int entity, int cel
     }
 }
 
+//! The boundary physical groups: their names into m.boundaryNames, and each face's group by the face's key.
 std::map<FaceKey, int> readBoundaryGroups(GlobalMesh& m, const std::unordered_map<std::size_t, int>& index)
 {
     // faces are lines in 2D, triangles in 3D

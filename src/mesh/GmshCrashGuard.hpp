@@ -1,7 +1,8 @@
 /*! \file GmshCrashGuard.hpp
- *  \brief A crash inside gmsh, reported as bad input. gmsh 4.8 (Debian bookworm's) dies with a segmentation fault on
- *  some inputs it accepts, such as a .geo that sets Mesh.Algorithm = 8 (Frontal-Delaunay for quads) in 2D; no
- *  exception reaches the caller. While a guard lives, a fatal signal prints one line naming the file and exits with
+ *  \brief A crash inside gmsh, reported as bad input. gmsh 4.8 (Debian bookworm's) dies on some inputs it accepts:
+ *  a segmentation fault with a .geo that sets Mesh.Algorithm = 8 (Frontal-Delaunay for quads) in 2D, an exception
+ *  thrown from its own threads (std::terminate) with Mesh.RandomFactor = 0.5 in 3D; neither reaches the caller as an
+ *  exception. While a guard lives, a fatal signal or std::terminate prints one line naming the file and exits with
  *  ExitInput, before any output exists (meshing precedes it).
  */
 #pragma once
