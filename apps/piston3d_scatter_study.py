@@ -9,7 +9,10 @@ pressure scatter by what the nodes see: the net node forces of the cells' pressu
 (c_ir the corner vectors); the part of the pressure deviation in the kernel of p -> F exerts no force on any node
 and is never relaxed. The kernel fraction of the measured deviation is printed beside that of random noise on the
 same cells (docs/sedov.md, session 29). Nodes on the side walls keep their two tangential components; nodes of
-cells outside the layer are left out.
+cells outside the layer are left out. For comparison, the kernel fraction of random noise in pressures at the nodes,
+acting through each cell's mean of its nodes' pressures (F_s = sum_r p_r dV_r/dx_s with nodal volumes V_r = sum |T_i|
+/ 4, the average-nodal-pressure tetrahedron of solid mechanics): one pressure per node instead of per cell
+(docs/sedov.md, session 30).
 Printed and written as CSV; PNG beside it: the scatters and the kernel fraction per run.
 
 usage: piston3d_scatter_study.py UNILAG OUT.csv [SIZE]     (SIZE: mesh size, default the scene's 0.03)
@@ -49,7 +52,8 @@ def corner_vectors(p):
 
 
 def kernel_fractions(run, layer):
-    """The share of the pressure deviation's variance (and of random noise's) that p -> F does not see."""
+    """The share of the pressure deviation's variance (and of random noise's) that p -> F does not see, and that of
+    random noise in nodal pressures (each cell's pressure the mean of its nodes')."""
     with h5py.File(sorted(glob.glob(f"{run}/unilag_*.h5"))[-1], "r") as f:
         x, cells, p = f["coordinates"][:], f["connectivity"][:], f["pressure"][:, 0]
     c = corner_vectors(x[cells])
@@ -78,7 +82,14 @@ def kernel_fractions(run, layer):
         return np.sum((dp - forces.T @ y) ** 2) / np.sum(dp ** 2)
 
     dp = p[inside] - p[inside].mean()
-    return fraction(dp), fraction(np.random.default_rng(1).standard_normal(len(inside)))
+    rng = np.random.default_rng(1)
+    noise = fraction(dp), fraction(rng.standard_normal(len(inside)))
+    mean = [(j, index[r]) for j, i in enumerate(inside) for r in cells[i] if index[r] >= 0]
+    to_cells = sparse.csr_matrix(([0.25] * len(mean), tuple(zip(*mean))), shape=(len(inside), len(nodes)))
+    nodal = (forces @ to_cells).tocsr()
+    q = rng.standard_normal(len(nodes))
+    y = sparse_linalg.lsqr(nodal.T, q, atol=1e-12, btol=1e-12, iter_lim=20000)[0]
+    return noise + (np.sum((q - nodal.T @ y) ** 2) / np.sum(q ** 2),)
 
 
 def main():
@@ -95,19 +106,21 @@ def main():
                 args += ["--set", s]
             subprocess.run(args, check=True, stdout=subprocess.DEVNULL)
             m = measure(run)
-            seen, noise = kernel_fractions(run, m["layer"])
+            seen, noise, nodal = kernel_fractions(run, m["layer"])
             means, sc = m["means"], m["scatter"]
             rows.append({"run": name, "cells": m["summary"]["cells"], "steps": m["summary"]["steps"],
                          "density": means["density"][0], "pressure": means["pressure"][0],
                          "internal_energy": means["internal energy"][0],
                          "scatter_pressure": sc["pressure"], "scatter_density": sc["density"],
                          "scatter_internal_energy": sc["internal energy"], "largest_density": m["largest_density"],
-                         "kernel_fraction": seen, "kernel_fraction_noise": noise})
+                         "kernel_fraction": seen, "kernel_fraction_noise": noise,
+                         "kernel_fraction_noise_nodal": nodal})
             r = rows[-1]
             print(f"{name:10s} density {r['density']:.4f} pressure {r['pressure']:.4f} eps {r['internal_energy']:.4f}"
                   f" | scatter p {100 * r['scatter_pressure']:.1f}% rho {100 * r['scatter_density']:.1f}% eps "
                   f"{100 * r['scatter_internal_energy']:.1f}% | largest rho {r['largest_density']:.2f} | in the kernel "
-                  f"{100 * seen:.0f}% (noise {100 * noise:.0f}%)", flush=True)
+                  f"{100 * seen:.0f}% (noise {100 * noise:.0f}%; nodal pressures' noise {nodal:.0e})",
+                  flush=True)
     with open(out_csv, "w", newline="") as f:
         w = csv.DictWriter(f, fieldnames=list(rows[0]))
         w.writeheader()
