@@ -49,19 +49,22 @@ double signedMeasure(int dim, const double* a, const double* b, const double* c,
  *  reported as an unnamed boundary at best. */
 void rejectOtherElements(const std::string& source, int dim, int entity, int cellType)
 {
-    std::vector<int> types;
-    std::vector<std::vector<std::size_t>> tags, nodes;
-    gmsh::model::mesh::getElements(types, tags, nodes, dim, entity);
-    for (std::size_t t = 0; t < types.size(); ++t)
+    std::vector<int> types; // the types alone: the cells' own tags and nodes are read once, by the caller
+    gmsh::model::mesh::getElementTypes(types, dim, entity);
+    for (int type : types)
     {
-        if (types[t] == cellType || tags[t].empty())
+        if (type == cellType)
+            continue;
+        std::vector<std::size_t> tags, nodes;
+        gmsh::model::mesh::getElementsByType(type, tags, nodes, entity);
+        if (tags.empty())
             continue;
         std::string name;
         int elementDim = 0, order = 0, nodeCount = 0, primaryNodes = 0;
         std::vector<double> local;
-        gmsh::model::mesh::getElementProperties(types[t], name, elementDim, order, nodeCount, local, primaryNodes);
-        throw InputError(source + ": element " + std::to_string(tags[t][0]) + " is a " + name + " (and " +
-                         std::to_string(tags[t].size() - 1) + " more): unilag takes linear " +
+        gmsh::model::mesh::getElementProperties(type, name, elementDim, order, nodeCount, local, primaryNodes);
+        throw InputError(source + ": element " + std::to_string(tags[0]) + " is a " + name + " (and " +
+                         std::to_string(tags.size() - 1) + " more): unilag takes linear " +
                          (dim == 2 ? "triangles" : "tetrahedra") + " only");
     }
 }
