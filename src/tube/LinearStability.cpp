@@ -304,12 +304,26 @@ int unstableMode(const LinearStability& stability, const Onset& onset, int count
     std::vector<double> speeds(points);
     for (int p = 0; p < points; ++p)
         speeds[p] = onset.speed * (1.0 + 1e-4) * p / (points - 1);
-    const std::vector<Mode>& last = trackModes(stability, speeds, count).back();
+    // a copy: a reference into the temporary loci would dangle
+    const std::vector<Mode> last = trackModes(stability, speeds, count).back();
+    // The mode that carries the onset's eigenvalue i omega_cf, not the one that grows most over all: at a
+    // divergence the followed eigenvalue may be the stable one of the real pair it splits into, and at an onset
+    // near u = 0 every mode's growth is round-off. Two modes there (a coalescence, beta = 0): the growing one.
+    const std::complex<double> atOnset(0.0, onset.frequency);
+    std::vector<double> distance(last.size());
+    for (std::size_t m = 0; m < last.size(); ++m)
+        distance[m] = std::abs(last[m].lambda - atOnset);
+    if (distance.empty())
+        return 0;
+    const double nearest = *std::min_element(distance.begin(), distance.end());
     int best = -1;
-    for (int m = 0; m < int(last.size()); ++m)
-        if (best < 0 || last[m].growth() > last[best].growth())
-            best = m;
-    return best + 1;
+    double others = std::numeric_limits<double>::infinity(); // the nearest mode outside the group at onset
+    for (std::size_t m = 0; m < last.size(); ++m)
+        if (distance[m] > 2.0 * nearest)
+            others = std::min(others, distance[m]);
+        else if (best < 0 || last[m].growth() > last[best].growth())
+            best = int(m);
+    return nearest < 0.5 * others ? best + 1 : 0;
 }
 
 std::array<std::complex<double>, 2> dispersionOmega(double k, double u, double beta)

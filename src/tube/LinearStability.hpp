@@ -120,8 +120,9 @@ std::vector<std::vector<Mode>> trackModes(const LinearStability& stability, cons
                                           int count);
 
 /*! Which mode goes unstable at the onset: the `count` lowest modes without flow (1: lowest frequency) followed
- *  along u from 0 to just above onset.speed (trackModes, `points` speeds); the one that grows most there. 0 if
- *  there is no onset or the unstable mode is not among the `count` followed. */
+ *  along u from 0 to just above onset.speed (trackModes, `points` speeds); the one whose eigenvalue there is
+ *  nearest i omega_cf (0 at a divergence), or of two met there (a coalescence) the growing one. 0 if there is no
+ *  onset or the unstable mode is not clearly among the `count` followed (nearer i omega_cf than half the rest). */
 int unstableMode(const LinearStability& stability, const Onset& onset, int count = 6, int points = 301);
 
 //! u_cf of the scene's tube at mass ratio beta (the first instability, flutter or divergence).

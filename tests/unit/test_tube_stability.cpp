@@ -140,6 +140,8 @@ TEST(TubeStability, DivergenceOfSupportedTubes)
             const Onset o = s.firstInstability(scanTo(7.0));
             EXPECT_TRUE(o.divergence) << "a supported tube first buckles (beta " << beta << ")";
             EXPECT_NEAR(o.speed, c.expected, 1e-3 * c.expected);
+            // the first mode buckles: omega_1 reaches 0 there (pinned: omega_1^2 = pi^4 - u^2 pi^2)
+            EXPECT_EQ(unstableMode(s, o), 1) << "beta " << beta;
         }
     // a clamped-pinned tube buckles at 4.493 (tube.md 2.1); a cantilever never diverges
     EXPECT_NEAR(LinearStability(supported(EndCondition::Clamped, EndCondition::Pinned), 0.3).divergenceSpeed(), 4.4934,
