@@ -97,6 +97,11 @@ void readEnds(ConfigNode& root, TubeScene& s)
     s.right = e.option("right", "free", names);
     if (s.left == EndCondition::Free && s.right == EndCondition::Free)
         e.fail("right", "a tube free at both ends has rigid-body modes; hold at least one end");
+    // The fluid leaves at a free end in this model (Paidoussis' discharging tube); entering there (an aspirating
+    // tube) it predicts flutter at vanishing flow speed, an artefact of the model (Paidoussis, JFS 13, 1999).
+    if (s.left == EndCondition::Free)
+        e.fail("left", "the fluid enters at the left end, and a free inlet (an aspirating tube) is outside the "
+                       "model: it would flutter at vanishing flow speed; free the right end (the outlet) instead");
     if (s.left != EndCondition::Clamped && s.right != EndCondition::Clamped &&
         (s.left == EndCondition::Free || s.right == EndCondition::Free))
         e.fail("right", "a pinned-free tube has a rigid-body mode; clamp one end");

@@ -38,6 +38,8 @@ tube_error(mass_ratio "tube_stability.yaml: key 'stability.beta': mass ratio mus
            --set stability.beta=[0.2,1.0])
 tube_error(end_condition "tube_stability.yaml: key 'ends.right': 'fre' is not one of: clamped, pinned, free"
            --set ends.right=fre)
+tube_error(aspirating "tube_stability.yaml: key 'ends.left': the fluid enters at the left end, and a free inlet"
+           --set ends.left=free --set ends.right=clamped)
 tube_error(radii "tube_stability.yaml: key 'tube.inner_radius': must be less than outer_radius"
            --set tube.outer_radius=0.005 --set tube.inner_radius=0.007)
 tube_error(unknown_key "tube_stability.yaml: key 'stability.speed_mx': unknown key \\(did you mean 'stability.speed_max'"
