@@ -98,6 +98,14 @@ std::string regionState(const GprModel<D, P>& md, std::size_t r, const MatV& mat
     const int mat = int(std::distance(md.scene.materials.begin(), md.scene.materials.find(spec.material)));
     const char* thKey = spec.hasPressure ? "pressure" : "specific_internal_energy";
     const auto points = spec.average ? samplingPoints<D>() : std::vector<std::array<double, D + 1>>{};
+    // "FILE: key 'K': value X at cell N REASON", REASON "is not finite" for inf and nan whatever the check
+    auto keyError = [&](const std::string& k, double value, const std::string& at, const char* reason)
+    {
+        std::ostringstream os;
+        os << md.scene.file << ": key '" << k << "': value " << std::setprecision(10) << value << at << " "
+           << (std::isfinite(value) ? reason : "is not finite");
+        return os.str();
+    };
     for (LO i = 0; i < dm.nCells; ++i)
     {
         if (dm.cellRegion[i] != int(r))
@@ -108,15 +116,20 @@ std::string regionState(const GprModel<D, P>& md, std::size_t r, const MatV& mat
         {
             rho = f.eval(spec.density, f.rho, c);
             const double th = f.eval(spec.hasPressure ? spec.pressure : spec.internalEnergy, f.thermo, c);
+            const std::string at = " at cell " + std::to_string(dm.cellGid[i]);
             if (!(rho > 0.0) || !std::isfinite(rho))
-                error = md.scene.file + ": key '" + key + "density': value " + std::to_string(rho) + " at cell " +
-                        std::to_string(dm.cellGid[i]) + " is not positive";
+                error = keyError(key + "density", rho, at, "is not positive");
             else if (!(th >= 0.0) || !std::isfinite(th))
-                error = md.scene.file + ": key '" + key + thKey + "': value " + std::to_string(th) + " at cell " +
-                        std::to_string(dm.cellGid[i]) + " is negative";
+                error = keyError(key + thKey, th, at, "is negative");
             for (int d = 0; d < 3; ++d)
+            {
                 v[d] = d < spec.velocityComponents && d < D ? f.eval(spec.velocity[d], f.velocity[d], c) : 0.0;
+                if (error.empty() && !std::isfinite(0.5 * v[d] * v[d])) // its kinetic energy must be a number too
+                    error = keyError(key + "velocity", v[d], at, "gives a kinetic energy that is not finite");
+            }
             eps = error.empty() && spec.hasPressure ? gpr::internalEnergy(mats(mat).eos, rho, th) : th;
+            if (error.empty() && !std::isfinite(eps))
+                error = keyError(key + thKey, th, at, "gives a specific internal energy that is not finite");
         };
         double rho, eps, v[3];
         if (!spec.average)
@@ -135,6 +148,9 @@ std::string regionState(const GprModel<D, P>& md, std::size_t r, const MatV& mat
             sh(i, S::vel + d) = v[d];
             kin += 0.5 * v[d] * v[d];
         }
+        if (!std::isfinite(eps + kin))
+            return keyError(key + "velocity", std::sqrt(2.0 * kin), " at cell " + std::to_string(dm.cellGid[i]),
+                            "(its speed) gives a total energy that is not finite");
         sh(i, S::omega) = 1.0 / rho;
         sh(i, S::energy) = eps + kin;
         if constexpr (P::strain)

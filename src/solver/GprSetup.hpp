@@ -61,6 +61,26 @@ inline int kernelBoundaryType(BoundaryKind k)
     }
 }
 
+/*! Where an imposed pressure p(t) is not a number over the run, "value nan at t = 0.25 is not finite" ("" if it
+ *  is at t = 0, the end time and 1000 times between): a nan there would stop the run blaming a cell beside it. */
+inline std::string pressureLawNotFinite(const Expr& pressure, double endTime)
+{
+    const int samples = pressure.isConstant() ? 0 : 1000;
+    Expression law(pressure.isConstant() ? "0" : pressure.text);
+    for (int k = 0; k <= samples; ++k)
+    {
+        const double t = samples ? endTime * k / samples : 0.0;
+        const double p = samples ? law(0.0, 0.0, 0.0, t) : pressure.value;
+        if (!std::isfinite(p))
+        {
+            std::ostringstream os;
+            os << "value " << p << " at t = " << t << " is not finite";
+            return os.str();
+        }
+    }
+    return {};
+}
+
 //! Boundary table by group id; every group of the mesh needs a condition and every condition a group.
 template <int D, class P> std::string setupBoundaries(GprModel<D, P>& md)
 {
@@ -92,6 +112,9 @@ template <int D, class P> std::string setupBoundaries(GprModel<D, P>& md)
             vh(g, 0) = b.pressure.value;
             if (!b.pressure.isConstant())
                 md.pressureLaws.emplace_back(g, std::make_unique<Expression>(b.pressure.text));
+            const std::string bad = pressureLawNotFinite(b.pressure, scene.endTime);
+            if (!bad.empty())
+                return scene.file + ": key 'boundaries." + dm.boundaryNames[g] + ".pressure': " + bad;
         }
     }
     for (const auto& [name, spec] : scene.boundaries)

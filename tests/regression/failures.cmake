@@ -195,3 +195,15 @@ add_test(NAME output_rerun_clears COMMAND bash ${SCRIPTS}/expect_rerun_clears.sh
          "--set time.end=0.3 --set output.interval=0.1" "--set time.end=0.1 --set output.interval=0.1"
          -- ${UNILAG} run ${SMALL_SEDOV})
 set_tests_properties(output_rerun_clears PROPERTIES LABELS regression)
+# An initial state that is not a number anywhere is bad input naming its key, not a run that stops at t = 0 having
+# written a dump of nans: an infinite velocity, a pressure whose internal energy overflows, a boundary pressure
+# that is nan from t = 0.003 on (caught by sampling the law over the run before it starts).
+add_test(NAME error_infinite_velocity COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err_inf_velocity
+         "sod2d.yaml: key 'regions.gas.velocity': value inf at cell 0 is not finite"
+         -- ${UNILAG} run ${INPUTS}/sod2d.yaml --set "regions.gas.velocity=[1/0, 0]")
+add_test(NAME error_energy_overflow COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err_energy_overflow
+         "sod2d.yaml: key 'regions.gas.pressure': value 1e.308 at cell 0 gives a specific internal energy that is not"
+         -- ${UNILAG} run ${INPUTS}/sod2d.yaml --set regions.gas.pressure=1e308)
+add_test(NAME error_boundary_pressure_nan COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err_bc_pressure_nan
+         "kidder2d.yaml: key 'boundaries.inner.pressure': value -?nan at t = 0.003.* is not finite"
+         -- ${UNILAG} run ${INPUTS}/kidder2d.yaml --set "boundaries.inner.pressure=t > 0.003 ? sqrt(-1) : 1")
