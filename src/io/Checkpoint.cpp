@@ -16,7 +16,7 @@ namespace
 {
 
 // 2: each text, list and table carries its FNV-1a checksum (group "checksums"), so that a corrupt value is refused
-const char* const formatTag = "unilag checkpoint 3"; // 3: the angular momentum in the totals
+const char* const formatTag = "unilag checkpoint 4"; // 4: the scene sections, the initial shape quality
 
 //! FNV-1a (64 bits) continued over n bytes: a checksum of the values as written, whatever the number of ranks.
 std::uint64_t fnv1a(std::uint64_t hash, const void* data, std::size_t n)

@@ -6,13 +6,89 @@
  */
 #pragma once
 
+#include <charconv>
+#include <map>
+#include <sstream>
 #include <string>
 #include <vector>
+
+#include <Teuchos_Array.hpp>
+#include <Teuchos_ParameterList.hpp>
 
 #include "io/Checkpoint.hpp"
 
 namespace unilag
 {
+
+//! The sections of the scene a restart must keep: what the state's evolution depends on (not time, output, regions).
+inline const char* const kRestartSections[] = {"materials", "boundaries", "scheme"};
+
+//! The shortest text that reads back as v (1.4, not 1.3999999999999999).
+inline std::string shortestText(double v)
+{
+    char buf[32];
+    const auto end = std::to_chars(buf, buf + sizeof buf, v).ptr;
+    return std::string(buf, end);
+}
+
+//! "key=value" lines of a scene section's leaves, depth first, numbers to all their digits.
+inline void flattenSection(const Teuchos::ParameterList& list, const std::string& prefix, std::ostringstream& out)
+{
+    for (auto it = list.begin(); it != list.end(); ++it)
+    {
+        const std::string key = prefix + list.name(it);
+        const Teuchos::ParameterEntry& e = list.entry(it);
+        if (e.isList())
+            flattenSection(Teuchos::getValue<Teuchos::ParameterList>(e), key + ".", out);
+        else if (e.isType<double>())
+            out << key << "=" << shortestText(Teuchos::getValue<double>(e)) << "\n";
+        else if (e.isType<Teuchos::Array<double>>())
+        {
+            out << key << "=";
+            for (double v : Teuchos::getValue<Teuchos::Array<double>>(e))
+                out << shortestText(v) << " ";
+            out << "\n";
+        }
+        else
+            out << key << "=" << e.getAny(false) << "\n";
+    }
+}
+
+//! A section of the resolved scene as flattenSection's lines ("" where the scene has no such section).
+inline std::string sceneSection(const Teuchos::ParameterList& resolved, const std::string& section)
+{
+    if (!resolved.isSublist(section))
+        return {};
+    std::ostringstream out;
+    flattenSection(resolved.sublist(section), section + ".", out);
+    return out.str();
+}
+
+/*! The first key whose value differs between two sceneSection texts, as "KEY: 'A' in the checkpoint, 'B' in this
+ *  scene" ("" if they hold the same keys and values, in whatever order). */
+inline std::string sectionChange(const std::string& checkpoint, const std::string& scene)
+{
+    auto parse = [](const std::string& text)
+    {
+        std::map<std::string, std::string> kv;
+        std::istringstream in(text);
+        for (std::string line; std::getline(in, line);)
+            kv[line.substr(0, line.find('='))] = line.substr(line.find('=') + 1);
+        return kv;
+    };
+    const auto was = parse(checkpoint), now = parse(scene);
+    std::map<std::string, std::string> keys = was;
+    keys.insert(now.begin(), now.end());
+    for (const auto& [key, unused] : keys)
+    {
+        const auto a = was.find(key), b = now.find(key);
+        const std::string va = a == was.end() ? "(not given)" : "'" + a->second + "'";
+        const std::string vb = b == now.end() ? "(not given)" : "'" + b->second + "'";
+        if (va != vb)
+            return key + ": " + va + " in the checkpoint, " + vb + " in this scene";
+    }
+    return {};
+}
 
 //! What identifies a run's checkpoint: a restart must match every line (scene, mesh, physics, scheme).
 template <int D, class P> std::vector<std::pair<std::string, std::string>> checkpointIdentity(const GprModel<D, P>& md)

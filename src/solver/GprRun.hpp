@@ -227,10 +227,13 @@ template <int D> std::string angularText(const std::vector<double>& totals)
 
 template <int D, class P>
 void writeSummary(const GprModel<D, P>& md, const GprSystem<D, P>& sys, const RunOptions& options, const LoopResult& r,
-                  const Conservation& c, const ExactErrors& x, const std::vector<double>& radii, double initialQuality)
+                  const Conservation& c, const ExactErrors& x, const std::vector<double>& radii, long stepsBefore)
 {
     const auto& dm = *md.mesh;
-    const double cellSteps = double(dm.nGlobalCells) * double(r.state.steps) / std::max(r.wallSeconds, 1e-300);
+    // the rate of this process's steps (a restart's wall time is its own, its steps counted from the checkpoint)
+    const double cellSteps =
+        double(dm.nGlobalCells) * double(r.state.steps - stepsBefore) / std::max(r.wallSeconds, 1e-300);
+    const double initialQuality = sys.initialQuality();
     const double picardMean = r.state.steps > 0 ? double(sys.picardTotal()) / r.state.steps : 0.0;
     Summary s =
         runSummary(md.scene.file, md.scene.name, r, D, dm.nGlobalCells, dm.nGlobalNodes, md.size, options.threads);
@@ -308,6 +311,9 @@ int runGpr(const Scene& scene, std::shared_ptr<DistributedMesh> mesh, const RunO
     LoopState from; // a new run starts at t = 0; a restart where its checkpoint stopped (InputError if it cannot)
     if (restart)
         from = sys.restore(options.restart);
+    if (restart && !(scene.endTime > from.t)) // nothing to continue: not a finished run's summary
+        throw InputError(scene.file + ": key 'time.end': " + jsonNumber(scene.endTime) +
+                         " is not after the checkpoint's time " + jsonNumber(from.t));
     // Only now, with the input fully validated, does anything get written.
     if (md.rank == 0)
     {
@@ -322,13 +328,15 @@ int runGpr(const Scene& scene, std::shared_ptr<DistributedMesh> mesh, const RunO
     if (scene.writeOutput)
         sys.openOutput(scene.outputDirectory, from.dumps);
     if (!restart)
+    {
         sys.start();
-    const double initialQuality = minShapeQuality(md);
+        sys.setInitialQuality(minShapeQuality(md));
+    }
     const LoopResult r = runTimeLoop(sys, timeControl(scene, options), md.comm, from);
     const Conservation c = conservation<D>(r.initialTotals, r.finalTotals, sys.balance());
     const ExactErrors x = r.failure.empty() ? exactErrors(md, r.state.t) : ExactErrors{};
     const std::vector<double> radii = boundaryRadii(md);
-    writeSummary(md, sys, options, r, c, x, radii, initialQuality);
+    writeSummary(md, sys, options, r, c, x, radii, from.steps);
     if (!r.failure.empty())
     {
         if (md.rank == 0)

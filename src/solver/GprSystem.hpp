@@ -270,6 +270,8 @@ template <int D, class P> class GprSystem : public TimeSystem
         io::CheckpointWriter out(md_.comm, checkpointPath());
         for (const auto& [key, value] : checkpointIdentity(md_))
             out.text(key, value);
+        for (const char* section : kRestartSections)
+            out.text(std::string("scene.") + section, sceneSection(md_.scene.resolved, section));
         const auto& dm = *md_.mesh;
         for (const auto& [name, node] : checkpointFields(md_, lagged()))
             out.table((node ? "node." : "cell.") + name, node ? dm.nGlobalNodes : dm.nGlobalCells,
@@ -278,6 +280,7 @@ template <int D, class P> class GprSystem : public TimeSystem
                                       double(loop.retries), loop.nextCheckpoint};
         out.numbers("loop", std::vector<double>(std::begin(loopNumbers), std::end(loopNumbers)));
         out.numbers("initial_totals", loop.initialTotals);
+        out.numbers("initial_quality", {initialQuality_});
         std::vector<double> run = {double(picardTotal_), double(picardMax_), maxGcl_, double(fallbackCells_),
                                    balance_.work,        balance_.passiveWork, balance_.heat, balance_.maxImbalance,
                                    double(balance_.worstNode), balance_.worstTime};
@@ -296,6 +299,14 @@ template <int D, class P> class GprSystem : public TimeSystem
             if (in.text(key) != value)
                 throw InputError("--restart '" + path + "': a checkpoint of another run (" + key + " '" +
                                  printable(in.text(key)) + "', this scene '" + value + "')");
+        for (const char* section : kRestartSections)
+        {
+            const std::string change =
+                sectionChange(in.text(std::string("scene.") + section), sceneSection(md_.scene.resolved, section));
+            if (!change.empty())
+                throw InputError("--restart '" + path + "': a checkpoint of another scene (" + printable(change, 160) +
+                                 "); a restart keeps the materials, boundaries and scheme");
+        }
         if (!md_.fields.has(lagged())) // ars_v1 is made by the first step's stage 1
             md_.fields.add(lagged(), Entity::Node, D, Lifetime::Scratch);
         for (const auto& [name, node] : checkpointFields(md_, lagged()))
@@ -315,6 +326,7 @@ template <int D, class P> class GprSystem : public TimeSystem
         s.retries = int(l[5]);
         s.nextCheckpoint = l[6];
         s.initialTotals = in.numbers("initial_totals");
+        initialQuality_ = in.numbers("initial_quality").at(0);
         if (s.initialTotals.size() != std::size_t(TotalsLayout<D>::size))
             throw InputError("--restart '" + path + "': the initial totals have the wrong length");
         picardTotal_ = long(run[0]);
@@ -341,6 +353,9 @@ template <int D, class P> class GprSystem : public TimeSystem
     //! Cells marked by the a posteriori first-order fallback, summed over the steps (order 2).
     long fallbackCells() const { return fallbackCells_; }
     int picardMax() const { return picardMax_; }
+    //! The smallest cell shape quality at t = 0: set by a new run, read from the checkpoint by a restart.
+    double initialQuality() const { return initialQuality_; }
+    void setInitialQuality(double q) { initialQuality_ = q; }
     double maxGclDefect() const { return maxGcl_; }
     //! Boundary impulse and work, wall work, boundary heat and the worst node imbalance of the accepted steps.
     const BoundaryBalance<D>& balance() const { return balance_; }
@@ -403,6 +418,7 @@ template <int D, class P> class GprSystem : public TimeSystem
     long fallbackCells_ = 0;
     int picardMax_ = 0;
     double maxGcl_ = 0.0;
+    double initialQuality_ = 0.0; //!< the mesh's smallest shape quality at t = 0 (kept through a restart)
     BoundaryBalance<D> balance_;
 };
 

@@ -58,9 +58,24 @@ restart_error(corrupt_table ${WORK}/corrupt_table.h5 "corrupt: table 'cell.state
 restart_error(corrupt_text ${WORK}/corrupt_text.h5 "corrupt: text 'physics' does not match its checksum$"
               ${SMALL_SEDOV})
 restart_error(corrupt_format ${WORK}/corrupt_format.h5
-              "not a unilag checkpoint of this version \\(format '\\?\\?ilag checkpoint 3', expected 'unilag checkpoint 3'\\)$"
+              "not a unilag checkpoint of this version \\(format '\\?\\?ilag checkpoint 4', expected 'unilag checkpoint 4'\\)$"
               ${SMALL_SEDOV})
 restart_error(other_mesh ${CK} "a checkpoint of another run \\(cells '1018', this scene '4048'\\)" ${SMALL_SEDOV}
               --set mesh.size=0.0288)
 restart_error(other_order ${CK} "a checkpoint of another run \\(order '1', this scene '2'\\)" ${SMALL_SEDOV}
               --set scheme.order=2)
+# the materials, boundaries and scheme keys of the resolved scene, whichever differs first (by key, any order)
+restart_error(other_material ${CK}
+              "a checkpoint of another scene \\(materials.gas.gamma: '1.4' in the checkpoint, '1.67'" ${SMALL_SEDOV}
+              --set materials.gas.gamma=1.67)
+restart_error(other_limiter ${CK}
+              "a checkpoint of another scene \\(scheme.limiter: 'node_fit' in the checkpoint, 'none'" ${SMALL_SEDOV}
+              --set scheme.limiter=none)
+restart_error(other_boundary ${CK}
+              "a checkpoint of another scene \\(boundaries.outer.type: 'slip_wall' in the checkpoint, 'free'" ${SMALL_SEDOV}
+              --set boundaries.outer.type=free)
+# a checkpoint at or after the new end time has nothing to continue
+add_test(NAME error_restart_end_before COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err_restart_end_before
+         "sedov2d.yaml: key 'time.end': 0.05 is not after the checkpoint's time" -- ${UNILAG} run ${SMALL_SEDOV}
+         --set time.end=0.05 --restart ${CK})
+set_tests_properties(error_restart_end_before PROPERTIES FIXTURES_REQUIRED restart_source LABELS regression)

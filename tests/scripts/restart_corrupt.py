@@ -22,6 +22,6 @@ def write(name, bytes_):
 corrupt = bytearray(data)
 corrupt[offset] ^= 0x10
 write("corrupt_table.h5", bytes(corrupt))
-assert data.count(b"hydro") == 1 and data.count(b"unilag checkpoint 3") == 1
+assert data.count(b"hydro") == 1 and data.count(b"unilag checkpoint 4") == 1
 write("corrupt_text.h5", data.replace(b"hydro", b"\xfa\x01dro"))
-write("corrupt_format.h5", data.replace(b"unilag checkpoint 3", b"\xfa\x01ilag checkpoint 3"))
+write("corrupt_format.h5", data.replace(b"unilag checkpoint 4", b"\xfa\x01ilag checkpoint 4"))
