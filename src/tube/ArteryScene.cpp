@@ -104,6 +104,9 @@ ArterySettings readArtery(ConfigNode& a)
     c.length = a.positive("length", c.length);
     c.radius = a.positive("radius", c.radius);
     c.wall = a.positive("wall_thickness", c.wall);
+    if (c.wall >= c.radius) // the thin-wall law beta = sqrt(pi) h E / ((1 - nu^2) A0) needs h well below R
+        a.fail("wall_thickness", "must be less than the radius (" + num(c.radius) + " m) for the thin-wall law, "
+                                 "found " + num(c.wall));
     c.young = a.positive("youngs_modulus", c.young);
     c.poisson = a.number("poisson_ratio", c.poisson);
     if (!(c.poisson > -1.0 && c.poisson < 1.0))

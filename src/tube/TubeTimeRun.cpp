@@ -321,10 +321,16 @@ int runOnRankZero(const TubeScene& scene, bool check)
         std::fprintf(stderr, "unilag: error: %s: %s\n", scene.file.c_str(), loop.failure.c_str());
         return ExitUnstable;
     }
+    char growth[160];
+    if (f.fit.ok)
+        std::snprintf(growth, sizeof growth, "growth rate %.4g (linear %.4g) per tau",
+                      f.fit.growthRate * scene.physical.timeScale(), f.linearGrowth);
+    else // too few tip peaks in the window: a held tip, a run too short, or a tip above fit_below from the start
+        std::snprintf(growth, sizeof growth, "no growth rate fitted: %d tip peaks below fit_below after fit_from "
+                      "(linear %.4g per tau)", f.fit.peaks, f.linearGrowth);
     std::printf("unilag: %s: tube dynamics, %d segments, U = %.4g m/s (u/u_cf = %.4g), %ld steps in %.3g s, "
-                "growth rate %.4g (linear %.4g) per tau; output in %s\n",
-                scene.name.c_str(), d.segments, f.flowSpeed, f.uDimensionless / f.uCritical, f.rodSteps, f.wall,
-                f.fit.ok ? f.fit.growthRate * scene.physical.timeScale() : NAN, f.linearGrowth, dir.c_str());
+                "%s; output in %s\n", scene.name.c_str(), d.segments, f.flowSpeed, f.uDimensionless / f.uCritical,
+                f.rodSteps, f.wall, growth, dir.c_str());
     if (!check)
         return ExitOk;
     return checkRun(scene, loop, f);

@@ -19,3 +19,8 @@ add_test(NAME artery_error_negative_tension COMMAND bash ${SCRIPTS}/expect_error
          "artery_carotid_tension.yaml: key 'artery.tension': must be a non-negative number" -- ${UNILAG_TUBE}
          ${CAROTID_TENSION_SCENE} --set artery.tension=-1.0)
 set_tests_properties(artery_error_negative_tension PROPERTIES LABELS "tube;regression")
+# A wall as thick as the radius is outside the thin-wall law the tube's pressure comes from.
+add_test(NAME artery_error_thick_wall COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/artery_err_wall
+         "artery_carotid_tension.yaml: key 'artery.wall_thickness': must be less than the radius" -- ${UNILAG_TUBE}
+         ${CAROTID_TENSION_SCENE} --set artery.wall_thickness=0.01)
+set_tests_properties(artery_error_thick_wall PROPERTIES LABELS "tube;regression")
