@@ -342,6 +342,9 @@ std::string openFile(const std::string& path, H5Id& file, H5Id& tables, std::map
     H5Id gt{file.id < 0 ? -1 : H5Gopen2(file.id, "texts", H5P_DEFAULT), H5Gclose};
     H5Id gv{file.id < 0 ? -1 : H5Gopen2(file.id, "vectors", H5P_DEFAULT), H5Gclose};
     tables.id = file.id < 0 ? -1 : H5Gopen2(file.id, "tables", H5P_DEFAULT);
+    if (file.id >= 0 && (gt.id < 0 || gv.id < 0 || tables.id < 0)) // a dump, say: readable, but not a checkpoint
+        return "an HDF5 file but not a unilag checkpoint (no texts, vectors and tables groups; a checkpoint is "
+               "<DIR>/checkpoint.h5)";
     std::vector<hsize_t> dims;
     bool ok = gt.id >= 0 && gv.id >= 0 && tables.id >= 0;
     for (const std::string& name : ok ? members(gt.id) : std::vector<std::string>())

@@ -49,6 +49,7 @@ function(restart_error name file pattern)
                          LABELS regression)
 endfunction()
 restart_error(missing ${WORK}/none.h5 "not a readable checkpoint" ${SMALL_SEDOV})
+restart_error(dump ${WORK}/restart_source/unilag_000000.h5 "an HDF5 file but not a unilag checkpoint" ${SMALL_SEDOV})
 restart_error(truncated ${WORK}/truncated.h5 "not a readable checkpoint \\(missing, truncated or corrupt HDF5\\)"
               ${SMALL_SEDOV})
 restart_error(other_scene ${CK} "a checkpoint of another run \\(title 'sedov2d', this scene 'vortex2d'\\)"
