@@ -61,16 +61,16 @@ inline int kernelBoundaryType(BoundaryKind k)
     }
 }
 
-/*! Where an imposed pressure p(t) is not a number over the run, "value nan at t = 0.25 is not finite" ("" if it
- *  is at t = 0, the end time and 1000 times between): a nan there would stop the run blaming a cell beside it. */
-inline std::string pressureLawNotFinite(const Expr& pressure, double endTime)
+/*! Where an imposed pressure is not a number over the run, "value nan at t = 0.25 is not finite" ("" if it is at
+ *  t = 0, the end time and 1000 times between; law null: the constant value): a nan there would stop the run
+ *  blaming a cell beside it. */
+inline std::string pressureNotFinite(Expression* law, double value, double endTime)
 {
-    const int samples = pressure.isConstant() ? 0 : 1000;
-    Expression law(pressure.isConstant() ? "0" : pressure.text);
+    const int samples = law ? 1000 : 0;
     for (int k = 0; k <= samples; ++k)
     {
         const double t = samples ? endTime * k / samples : 0.0;
-        const double p = samples ? law(0.0, 0.0, 0.0, t) : pressure.value;
+        const double p = law ? (*law)(0.0, 0.0, 0.0, t) : value;
         if (!std::isfinite(p))
         {
             std::ostringstream os;
@@ -110,9 +110,10 @@ template <int D, class P> std::string setupBoundaries(GprModel<D, P>& md)
         if (b.type == BoundaryKind::Pressure)
         {
             vh(g, 0) = b.pressure.value;
+            Expression* law = nullptr;
             if (!b.pressure.isConstant())
-                md.pressureLaws.emplace_back(g, std::make_unique<Expression>(b.pressure.text));
-            const std::string bad = pressureLawNotFinite(b.pressure, scene.endTime);
+                law = md.pressureLaws.emplace_back(g, std::make_unique<Expression>(b.pressure.text)).second.get();
+            const std::string bad = pressureNotFinite(law, b.pressure.value, scene.endTime);
             if (!bad.empty())
                 return scene.file + ": key 'boundaries." + dm.boundaryNames[g] + ".pressure': " + bad;
         }
