@@ -49,15 +49,24 @@ template <class Functor, class Result> void reduce(const char* name, int n, bool
     Kokkos::parallel_reduce(name, Kokkos::RangePolicy<ExecSpace>(0, n), f, std::forward<Result>(result));
 }
 
+/*! An inclusive scan in index order on one thread. Kokkos' parallel_scan adds its threads' chunks, whose bounds move
+ *  with the thread count (3 threads changed the rod's p A in the 13th digit), and a tube's results must not; a scan
+ *  is n additions, less than a launch costs. */
+template <class Functor> struct InOrderScan
+{
+    Functor f;
+    int n;
+    KOKKOS_INLINE_FUNCTION void operator()(int) const
+    {
+        typename Functor::value_type sum{};
+        for (int i = 0; i < n; ++i)
+            f(i, sum, true);
+    }
+};
+
 template <class Functor> void scan(const char* name, int n, bool serial, const Functor& f)
 {
-#if defined(KOKKOS_ENABLE_SERIAL)
-    if constexpr (serialReachable())
-        if (serial)
-            return Kokkos::parallel_scan(name, Kokkos::RangePolicy<Kokkos::Serial>(0, n), f);
-#endif
-    (void)serial;
-    Kokkos::parallel_scan(name, Kokkos::RangePolicy<ExecSpace>(0, n), f);
+    forEach(name, 1, serial, InOrderScan<Functor>{f, n});
 }
 
 } // namespace unilag::tube::launch
