@@ -419,11 +419,15 @@ KOKKOS_INLINE_FUNCTION Sym3 relaxPlasticStrain(const Sym3& Gs, double rho, doubl
 
 /*! \brief Implicit heat-relaxation factor: J^{n+1} = relaxHeatFactor(...) J*, i.e.
  *  1 / (1 + dt rho0 theta / (tau2 rho theta0)) (docs/gpr-model.md 2.3), theta frozen at t^n and rho at t^{n+1}.
- *  tau2 -> 0 gives 0 (Fourier limit), tau2 = +inf gives 1; dt <= 0 gives 1. */
+ *  tau2 -> 0 gives 0 (Fourier limit), tau2 = +inf gives 1; dt <= 0 or theta <= 0 gives 1. */
 KOKKOS_INLINE_FUNCTION double relaxHeatFactor(double dt, double tau2, double rho, double rho0, double theta,
                                               double theta0)
 {
     if (!(dt > 0.0))
+        return 1.0;
+    // theta = eps / cv dips below 0 by round-off in a cold cell (updatedSound2 admits eps >= -epsRoundoff): there,
+    // as at theta = 0, the relaxation time is infinite (factor 1, also for tau2 = 0), so J never grows
+    if (!(theta > 0.0))
         return 1.0;
     return 1.0 / (1.0 + dt * rho0 * theta / (tau2 * rho * theta0));
 }

@@ -335,6 +335,12 @@ TEST(GprHeat, RelaxationFactorLimits)
     EXPECT_EQ(relaxHeatFactor(0.0, 0.0, rho, rho0, th, th0), 1.0);
     const double x = dt * rho0 * th / (0.01 * rho * th0);
     EXPECT_DOUBLE_EQ(relaxHeatFactor(dt, 0.01, rho, rho0, th, th0), 1.0 / (1.0 + x));
+    // a cold cell (theta at or a round-off below 0) does not relax J, and never amplifies it (it did: 1 / (1 - ...))
+    for (const double tau2 : {0.0, 1e-14, 0.01})
+    {
+        EXPECT_EQ(relaxHeatFactor(dt, tau2, rho, rho0, 0.0, th0), 1.0) << tau2;
+        EXPECT_EQ(relaxHeatFactor(dt, tau2, rho, rho0, -1e-18, th0), 1.0) << tau2;
+    }
     // kappa <-> tau2
     const double alpha = 2.0, kappa = 1e-2;
     const double tau2 = tau2FromKappa(kappa, alpha, th0, rho0);
