@@ -20,27 +20,34 @@ template <> MPI_Datatype mpiType<long long>()
     return MPI_LONG_LONG;
 }
 
-/*! All-to-all of per-destination lists: send[r] goes to rank r. Returns what the ranks sent here, concatenated in
- *  rank order, and in count[s] how much came from rank s. */
+/*! All-to-all of per-destination lists of rows of `width` values: send[r] goes to rank r. Returns what the ranks
+ *  sent here, concatenated in rank order, and in count[s] how many rows came from rank s. Counts and offsets are in
+ *  rows (an MPI datatype of one row): MPI's int then limits the rows a rank holds, as a local index does, not their
+ *  values (27 columns of 80 M rows overflowed an int count of doubles). */
 template <class T>
-std::vector<T> exchange(MPI_Comm comm, const std::vector<std::vector<T>>& send, std::vector<int>& count)
+std::vector<T> exchange(MPI_Comm comm, const std::vector<std::vector<T>>& send, std::vector<int>& count, int width = 1)
 {
+    width = std::max(width, 1); // a table without columns sends no values: counted as rows of one
     const int size = int(send.size());
     std::vector<int> sendCount(size), sendOffset(size, 0), recvOffset(size, 0);
     std::vector<T> flat;
     for (int r = 0; r < size; ++r)
     {
-        sendCount[r] = int(send[r].size());
-        sendOffset[r] = int(flat.size());
+        sendCount[r] = int(send[r].size() / std::size_t(width));
+        sendOffset[r] = int(flat.size() / std::size_t(width));
         flat.insert(flat.end(), send[r].begin(), send[r].end());
     }
     count.assign(size, 0);
     MPI_Alltoall(sendCount.data(), 1, MPI_INT, count.data(), 1, MPI_INT, comm);
     for (int r = 1; r < size; ++r)
         recvOffset[r] = recvOffset[r - 1] + count[r - 1];
-    std::vector<T> received(std::size_t(recvOffset[size - 1] + count[size - 1]));
-    MPI_Alltoallv(flat.data(), sendCount.data(), sendOffset.data(), mpiType<T>(), received.data(), count.data(),
-                  recvOffset.data(), mpiType<T>(), comm);
+    std::vector<T> received((std::size_t(recvOffset[size - 1]) + std::size_t(count[size - 1])) * std::size_t(width));
+    MPI_Datatype row;
+    MPI_Type_contiguous(width, mpiType<T>(), &row);
+    MPI_Type_commit(&row);
+    MPI_Alltoallv(flat.data(), sendCount.data(), sendOffset.data(), row, received.data(), count.data(),
+                  recvOffset.data(), row, comm);
+    MPI_Type_free(&row);
     return received;
 }
 
@@ -77,7 +84,7 @@ std::vector<double> rowsToBlocks(MPI_Comm comm, const RowBlocks& blocks, const C
     }
     std::vector<int> count;
     const std::vector<long long> gid = exchange(comm, gids, count);
-    const std::vector<double> value = exchange(comm, values, count);
+    const std::vector<double> value = exchange(comm, values, count, nc);
     const long long first = blocks.first(rank), n = blocks.count(rank);
     std::vector<double> block(std::size_t(n) * nc, 0.0);
     std::vector<char> filled(std::size_t(n), 0);
@@ -123,7 +130,7 @@ std::vector<double> rowsFromBlocks(MPI_Comm comm, const RowBlocks& blocks, const
             const auto row = block.begin() + long(wanted[k] - first) * ncomp;
             reply[s].insert(reply[s].end(), row, row + ncomp);
         }
-    const std::vector<double> values = exchange(comm, reply, count);
+    const std::vector<double> values = exchange(comm, reply, count, ncomp);
     std::vector<double> out(gid.size() * std::size_t(ncomp), 0.0);
     k = 0;
     for (int r = 0; r < blocks.size; ++r)
