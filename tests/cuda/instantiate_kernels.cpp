@@ -67,6 +67,7 @@ template <int D, class P> void mechanics(Launchers& out)
     if constexpr (P::heat)
     {
         keep(out, &heatFluxes<D, P>);
+        keep(out, &boundaryHeatRate<D, P>);
         keep(out, &limitedGradientsOf<D, heat::Quantities<D, P>>);
     }
 }
