@@ -227,12 +227,12 @@ template <int D> std::string angularText(const std::vector<double>& totals)
 
 template <int D, class P>
 void writeSummary(const GprModel<D, P>& md, const GprSystem<D, P>& sys, const RunOptions& options, const LoopResult& r,
-                  const Conservation& c, const ExactErrors& x, const std::vector<double>& radii, long stepsBefore)
+                  const Conservation& c, const ExactErrors& x, const std::vector<double>& radii, const LoopState& from)
 {
     const auto& dm = *md.mesh;
     // the rate of this process's steps (a restart's wall time is its own, its steps counted from the checkpoint)
     const double cellSteps =
-        double(dm.nGlobalCells) * double(r.state.steps - stepsBefore) / std::max(r.wallSeconds, 1e-300);
+        double(dm.nGlobalCells) * double(r.state.steps - from.steps) / std::max(r.wallSeconds, 1e-300);
     const double initialQuality = sys.initialQuality();
     const double picardMean = r.state.steps > 0 ? double(sys.picardTotal()) / r.state.steps : 0.0;
     Summary s =
@@ -243,6 +243,8 @@ void writeSummary(const GprModel<D, P>& md, const GprSystem<D, P>& sys, const Ru
     s.object("picard_iterations", {{"mean", jsonNumber(picardMean)}, {"max", std::to_string(sys.picardMax())}});
     s.integer("first_order_fallback_cells", sys.fallbackCells());
     s.number("t_final", r.state.t).number("wall_seconds", r.wallSeconds).number("cell_steps_per_second", cellSteps);
+    if (!options.restart.empty())
+        s.object("restarted_from", {{"step", std::to_string(from.steps)}, {"t", jsonNumber(from.t)}});
     s.number("mass_relative_change", c.mass).number("momentum_relative_change", c.momentum);
     s.number("energy_relative_change", c.energy).number("max_gcl_defect", sys.maxGclDefect());
     s.object("angular_momentum", {{"initial", angularText<D>(r.initialTotals)},
@@ -336,7 +338,7 @@ int runGpr(const Scene& scene, std::shared_ptr<DistributedMesh> mesh, const RunO
     const Conservation c = conservation<D>(r.initialTotals, r.finalTotals, sys.balance());
     const ExactErrors x = r.failure.empty() ? exactErrors(md, r.state.t) : ExactErrors{};
     const std::vector<double> radii = boundaryRadii(md);
-    writeSummary(md, sys, options, r, c, x, radii, from.steps);
+    writeSummary(md, sys, options, r, c, x, radii, from);
     if (!r.failure.empty())
     {
         if (md.rank == 0)

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstdlib>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <memory>
@@ -77,7 +78,9 @@ class LoadBalancer
         : c_(c), comm_(comm), size_(mpi::size(comm)), fromStep_(fromStep),
           on_(c.balanceInterval > 0 && (size_ > 1 || (c.repartition && c.imbalanceThreshold < 1.0)))
     {
-        if (!on_ || mpi::rank(comm) != 0 || c_.balanceCsv.empty())
+        // A restart without checks (on one rank) still cuts the rows of the abandoned run past its checkpoint.
+        const bool restartedCsv = fromStep > 0 && std::filesystem::exists(c_.balanceCsv);
+        if ((!on_ && !restartedCsv) || mpi::rank(comm) != 0 || c_.balanceCsv.empty())
             return;
         std::vector<std::string> kept = {
             "step,t,imbalance,model_imbalance,repartitioned,cells_moved,seconds,work_cost,speed_spread,forecast"};
@@ -88,6 +91,8 @@ class LoadBalancer
         csv_ = std::make_unique<std::ofstream>(c_.balanceCsv);
         for (const std::string& line : kept)
             *csv_ << line << '\n';
+        if (!on_)
+            csv_.reset();
     }
     void startStep()
     {
