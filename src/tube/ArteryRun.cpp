@@ -245,9 +245,12 @@ int runOnRankZero(const TubeScene& scene, bool check)
         std::fprintf(stderr, "unilag: error: %s: %s\n", scene.file.c_str(), loop.failure.c_str());
         return ExitUnstable;
     }
-    std::printf("unilag: %s: artery, %d cells, %d cycles in %.3g s, periodic after %d, mean p in/mid/out %.5g %.5g "
-                "%.5g Pa; output in %s\n",
-                scene.name.c_str(), cfg.cells, f.cyclesRun, f.wall, f.periodicAfter, f.meanPressure[0],
+    // summary.json says -1 (no cycle within the tolerance of the one before); the line says it in words
+    const std::string periodic =
+        f.periodicAfter < 0 ? "not periodic yet" : "periodic after " + std::to_string(f.periodicAfter);
+    std::printf("unilag: %s: artery, %d cells, %d cycles in %.3g s, %s, mean p in/mid/out %.5g %.5g %.5g Pa; "
+                "output in %s\n",
+                scene.name.c_str(), cfg.cells, f.cyclesRun, f.wall, periodic.c_str(), f.meanPressure[0],
                 f.meanPressure[1], f.meanPressure[2], dir.c_str());
     return check ? checkRun(a, f) : ExitOk;
 }
