@@ -180,7 +180,7 @@ int main(int argc, char** argv)
             if (unilag::tube::isTubeScene(args.scene) && !args.restart.empty())
                 throw unilag::InputError(args.scene + ": --restart: tube scenes have no checkpoints");
             if (unilag::tube::isTubeScene(args.scene))
-                code = unilag::runTube(args.scene, args.sets, args.output, args.check, MPI_COMM_WORLD);
+                code = unilag::runTube(args.scene, args.sets, args.output, args.check, args.quiet, MPI_COMM_WORLD);
             else
                 code = runContinuum(args, comm);
         }
@@ -194,7 +194,10 @@ int main(int argc, char** argv)
         {
             if (rank == 0)
                 std::fprintf(stderr, "unilag: error: the output could not be written: %s\n", e.what());
-            code = unilag::ExitInput;
+            // HDF5 may hold a file it failed to close (disk full), which its clean-up in MPI_Finalize then crashes
+            // on (exit 139; h5py #914 reports the same): end here, every rank having met the same error
+            std::fflush(nullptr);
+            std::_Exit(unilag::ExitInput);
         }
         catch (const std::exception& e)
         {

@@ -1,5 +1,7 @@
 #include "io/OutputFolder.hpp"
 
+#include "core/Errors.hpp"
+
 #include <cerrno>
 #include <cstring>
 #include <filesystem>
@@ -71,6 +73,16 @@ std::vector<std::string> removeRunOutputs(const std::string& dir)
         if (fs::remove(p, ec))
             removed.push_back(p.filename().string());
     return removed;
+}
+
+void finishOutput(std::ofstream& out, const std::string& file)
+{
+    if (out.is_open())
+        out.close();
+    else
+        out.setstate(std::ios::failbit); // it never opened
+    if (!out)
+        throw OutputError("cannot write " + file);
 }
 
 } // namespace unilag::io

@@ -4,6 +4,7 @@
  */
 #pragma once
 
+#include <fstream>
 #include <string>
 #include <vector>
 
@@ -18,5 +19,9 @@ std::string outputFolderProblem(const std::string& dir);
  *  unilag_NNNNNN.xmf (the dumps), summary.json, steps.csv, scene.yaml, checkpoint.h5, balance.csv. Nothing else is
  *  touched (not other files, not folders). Returns the names removed. */
 std::vector<std::string> removeRunOutputs(const std::string& dir);
+
+/*! \brief Closes an output file written through \p out; throws OutputError naming \p file if a write or the close
+ *  failed (a folder in its place, a full disk), failures a stream otherwise keeps to itself. */
+void finishOutput(std::ofstream& out, const std::string& file);
 
 } // namespace unilag::io

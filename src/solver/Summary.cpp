@@ -5,6 +5,7 @@
 #include <sstream>
 
 #include "core/Format.hpp"
+#include "io/OutputFolder.hpp"
 
 namespace unilag
 {
@@ -55,6 +56,7 @@ void Summary::write(const std::string& file) const
     for (std::size_t i = 0; i < entries_.size(); ++i)
         out << "  \"" << entries_[i].first << "\": " << entries_[i].second << (i + 1 < entries_.size() ? ",\n" : "\n");
     out << "}\n";
+    io::finishOutput(out, file);
 }
 
 namespace

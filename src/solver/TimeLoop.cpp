@@ -14,6 +14,7 @@
 
 #include "core/Format.hpp"
 #include "core/Mpi.hpp"
+#include "io/OutputFolder.hpp"
 #include "solver/CostFit.hpp"
 
 namespace unilag
@@ -91,8 +92,17 @@ class LoadBalancer
         csv_ = std::make_unique<std::ofstream>(c_.balanceCsv);
         for (const std::string& line : kept)
             *csv_ << line << '\n';
-        if (!on_)
+        if (!on_ || !*csv_) // nothing more to write, or a folder in its place (finish throws)
+        {
+            finish();
             csv_.reset();
+        }
+    }
+    //! rank 0 closes balance.csv: OutputError if it could not be written
+    void finish()
+    {
+        if (csv_)
+            io::finishOutput(*csv_, c_.balanceCsv);
     }
     void startStep()
     {
@@ -326,6 +336,8 @@ LoopResult runTimeLoop(TimeSystem& system, const TimeControl& c, MPI_Comm comm, 
         steps = std::make_unique<std::ofstream>(c.stepsCsv);
         for (const std::string& line : kept)
             *steps << line << '\n';
+        if (!*steps) // a folder in its place: stop before the first step (rank 0 ends the job, see unilag.cpp)
+            io::finishOutput(*steps, c.stepsCsv);
     }
     const auto wall0 = Clock::now();
     {
@@ -392,7 +404,10 @@ LoopResult runTimeLoop(TimeSystem& system, const TimeControl& c, MPI_Comm comm, 
                 balance.check(system, s.steps, s.t, r);
             progress.report(s.steps, s.t, dt);
         }
+        balance.finish();
     }
+    if (steps)
+        io::finishOutput(*steps, c.stepsCsv); // a full disk is said, not left to a short file
     r.wallSeconds = std::chrono::duration<double>(Clock::now() - wall0).count();
     r.stepCapped = r.failure.empty() && r.signal == 0 && s.t < c.endTime * (1.0 - 1e-14);
     if (r.failure.empty())

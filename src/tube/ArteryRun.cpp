@@ -12,6 +12,7 @@
 
 #include "core/Errors.hpp"
 #include "core/Format.hpp"
+#include "io/OutputFolder.hpp"
 #include "core/Mpi.hpp"
 #include "io/XdmfWriter.hpp"
 #include "solver/Summary.hpp"
@@ -178,6 +179,7 @@ void writeWaveforms(const ArteryTimeSystem& sys, const std::string& file)
             out << ',' << sys.samples[i * kProbeWidth + j];
         out << '\n';
     }
+    io::finishOutput(out, file);
 }
 
 void writeSummary(const TubeScene& scene, const Artery& artery, const LoopResult& loop, const ArteryFigures& f,
@@ -228,10 +230,8 @@ int runOnRankZero(const TubeScene& scene, bool check)
     writeTubeScene(scene, dir + "/scene.yaml");
     const double sample = a.inlet.period / a.samplesPerCycle;
     ArteryTimeSystem system(artery, sample, dir);
-    TimeControl quiet;
-    quiet.progress = false;
     const TimedLoop run = runTubeLoop(system, a.cycles * a.inlet.period,
-                                      a.dumpsPerCycle > 0 ? a.inlet.period / a.dumpsPerCycle : 0.0, sample, quiet);
+                                      a.dumpsPerCycle > 0 ? a.inlet.period / a.dumpsPerCycle : 0.0, sample, false);
     const LoopResult& loop = run.loop;
     ArteryFigures f;
     f.wall = run.wall;

@@ -283,7 +283,7 @@ int runOnRankZero(const TubeScene& scene, bool check)
     if (g.riemann)
         f.ref = riemannShock(g.left, g.right, g.setup.gamma);
     GasRodTimeSystem system(tube, f.ref, g.setup.gamma, dir);
-    const TimedLoop run = runTubeLoop(system, g.endTime, g.outputInterval, tube.stableStep()); // CFL step: stable
+    const TimedLoop run = runTubeLoop(system, g.endTime, g.outputInterval, tube.stableStep(), scene.progress); // CFL step: stable
     const LoopResult& loop = run.loop;
     f.wall = run.wall;
     f.maxEnergyChange = system.maxEnergyChange;

@@ -303,7 +303,7 @@ int runOnRankZero(const TubeScene& scene, bool check)
     f.ref = g.wall.enabled ? wallShockReference(g) : exactReference(g);
     GasTimeSystem system(gas, f.ref, dir);
     system.setGamma(g.setup.gamma);
-    const TimedLoop run = runTubeLoop(system, g.endTime, g.outputInterval, gas.stableStep()); // CFL step: stable
+    const TimedLoop run = runTubeLoop(system, g.endTime, g.outputInterval, gas.stableStep(), scene.progress); // CFL step: stable
     const LoopResult& loop = run.loop;
     f.wall = run.wall;
     if (!system.shockPosition.empty())

@@ -18,10 +18,11 @@ struct TimedLoop
 
 /*! Runs system from t = 0 to endTime on MPI_COMM_SELF with the tube runs' settings: no halvings (a tube step is
  *  stable by construction, or the run stops with its diagnosis) and the first step given (no ramp). control
- *  carries any other setting (progress, steps CSV). */
+ *  carries any other setting (steps CSV); progress: the progress line (TubeScene::progress). */
 inline TimedLoop runTubeLoop(TimeSystem& system, double endTime, double outputInterval, double firstStep,
-                             TimeControl control = TimeControl())
+                             bool progress, TimeControl control = TimeControl())
 {
+    control.progress = progress;
     control.endTime = endTime;
     control.outputInterval = outputInterval;
     control.maxRetries = 0;

@@ -173,6 +173,7 @@ void writeStabilityCsv(const TubeScene& scene, const StudyTables& t, const std::
             out << ',' << csvNumber(r[1] * p.velocityScale()) << ',' << csvNumber(r[2] / (2 * kPi * p.timeScale()));
         out << ',' << int(r[5]) << "\n";
     }
+    io::finishOutput(out, file);
 }
 
 void writeLociCsv(const TubeScene& scene, const StudyTables& t, const std::string& file)
@@ -191,6 +192,7 @@ void writeLociCsv(const TubeScene& scene, const StudyTables& t, const std::strin
                 out << ',' << csvNumber(r[c]);
             out << "\n";
         }
+    io::finishOutput(out, file);
 }
 
 //! stability.png from the two CSVs (matplotlib); a missing python is a warning, not a failed run.
@@ -283,7 +285,7 @@ std::string writeOutput(const TubeScene& scene, const StudyTables& t, int ranks,
 } // namespace
 
 int runTube(const std::string& scenePath, const std::vector<std::string>& overrides, const std::string& outputDir,
-            bool check, MPI_Comm comm)
+            bool check, bool quiet, MPI_Comm comm)
 {
     const auto start = std::chrono::steady_clock::now();
     const int rank = mpi::rank(comm);
@@ -294,6 +296,7 @@ int runTube(const std::string& scenePath, const std::vector<std::string>& overri
         scene = readTubeScene(scenePath, overrides);
         if (!outputDir.empty())
             scene.outputDirectory = outputDir;
+        scene.progress = !quiet;
         // as for continuum runs (Run.cpp): an output folder that cannot be written is bad input, before any work
         const std::string problem = rank == 0 ? io::outputFolderProblem(scene.outputDirectory) : std::string();
         if (!problem.empty())

@@ -21,6 +21,6 @@ namespace unilag
  *  agrees within 1e-3). Collective over comm. Returns the exit code: 0 ok, 2 bad input (one message on stderr
  *  naming the file and key; nothing written), 3 a failed check. */
 int runTube(const std::string& scenePath, const std::vector<std::string>& overrides, const std::string& outputDir,
-            bool check, MPI_Comm comm);
+            bool check, bool quiet, MPI_Comm comm);
 
 } // namespace unilag

@@ -115,6 +115,7 @@ struct TubeScene
     ArterySettings artery;
     std::string outputDirectory;
     bool plot = true;                                 //!< write stability.png (apps/tube_stability_plot.py)
+    bool progress = true;                             //!< a time run's progress line (the CLI's --quiet: false)
     std::shared_ptr<Teuchos::ParameterList> resolved; //!< the scene after --set, for scene.yaml
 };
 

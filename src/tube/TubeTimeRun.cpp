@@ -11,6 +11,7 @@
 
 #include "core/Errors.hpp"
 #include "core/Format.hpp"
+#include "io/OutputFolder.hpp"
 #include "core/Mpi.hpp"
 #include "io/XdmfWriter.hpp"
 #include "solver/Summary.hpp"
@@ -159,6 +160,7 @@ void writeTipCsv(const TipSeries& s, int maxRows, const std::string& file)
     const std::size_t n = s.t.size(), stride = std::max<std::size_t>(1, (n + maxRows - 1) / maxRows);
     for (std::size_t i = 0; i < n; i += stride)
         out << s.t[i] << ',' << s.x[i] << ',' << s.y[i] << ',' << s.z[i] << ',' << s.distance[i] << '\n';
+    io::finishOutput(out, file);
 }
 
 //! Everything the summary reports beyond the loop's own entries.
@@ -305,7 +307,7 @@ int runOnRankZero(const TubeScene& scene, bool check)
     TubeTimeSystem system(rod, d, dir);
     TimeControl control;
     control.stepsCsv = std::getenv("UNILAG_TUBE_STEPS") ? dir + "/steps.csv" : "";
-    const TimedLoop run = runTubeLoop(system, d.endTime, d.outputInterval, system.loopStep(), control); // fixed step
+    const TimedLoop run = runTubeLoop(system, d.endTime, d.outputInterval, system.loopStep(), scene.progress, control); // fixed step
     const LoopResult& loop = run.loop;
     f.wall = run.wall;
     f.rodSteps = loop.state.steps * TubeTimeSystem::substeps();

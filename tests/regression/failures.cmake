@@ -174,6 +174,15 @@ add_test(NAME error_output_write_failure COMMAND bash ${SCRIPTS}/expect_stop.sh 
 add_test(NAME error_mpi_output_write_failure COMMAND bash ${SCRIPTS}/expect_stop.sh ${WORK}/err_mpi_write
          write_failure -- ${MPI_RUN} 2 ${UNILAG} run ${SMALL_SEDOV})
 set_tests_properties(error_mpi_output_write_failure PROPERTIES PROCESSORS 2)
+# A full disk under a dump (1 and 2 ranks), a folder where summary.json goes, a full disk under steps.csv.
+foreach(case disk_full summary_in_the_way steps_full)
+    add_test(NAME error_output_${case} COMMAND bash ${SCRIPTS}/expect_stop.sh ${WORK}/err_${case} ${case}
+             -- ${UNILAG} run ${SMALL_SEDOV})
+    set_tests_properties(error_output_${case} PROPERTIES LABELS regression)
+endforeach()
+add_test(NAME error_mpi_output_disk_full COMMAND bash ${SCRIPTS}/expect_stop.sh ${WORK}/err_mpi_disk_full disk_full
+         -- ${MPI_RUN} 2 ${UNILAG} run ${SMALL_SEDOV})
+set_tests_properties(error_mpi_output_disk_full PROPERTIES PROCESSORS 2 LABELS "regression;mpi")
 add_test(NAME stop_max_steps COMMAND bash ${SCRIPTS}/expect_stop.sh ${WORK}/max_steps max_steps
          -- ${UNILAG} run ${SMALL_SEDOV} --set time.max_steps=5)
 # Under mpirun a bad option is reported by rank 0 alone (expect_error.sh asserts exactly one error line).
@@ -207,3 +216,7 @@ add_test(NAME error_energy_overflow COMMAND bash ${SCRIPTS}/expect_error.sh ${WO
 add_test(NAME error_boundary_pressure_nan COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err_bc_pressure_nan
          "kidder2d.yaml: key 'boundaries.inner.pressure': value -?nan at t = 0.003.* is not finite"
          -- ${UNILAG} run ${INPUTS}/kidder2d.yaml --set "boundaries.inner.pressure=t > 0.003 ? sqrt(-1) : 1")
+# The tube solvers' own files: a folder where the gas tube's summary.json goes is said, exit 2 (it was silent).
+add_test(NAME tube_error_summary_in_the_way COMMAND bash ${SCRIPTS}/expect_stop.sh ${WORK}/tube_err_summary
+         summary_in_the_way -- ${UNILAG} run ${INPUTS}/tube_sod.yaml)
+set_tests_properties(tube_error_summary_in_the_way PROPERTIES LABELS "regression;tube")

@@ -75,3 +75,13 @@ add_test(NAME tube_threads_agree COMMAND bash -c
           ${PYTHON} ${SCRIPTS}/same_tube_runs.py ${WORK}/tube_thr/rod1 ${WORK}/tube_thr/rod3 && \
           ${PYTHON} ${SCRIPTS}/same_tube_runs.py ${WORK}/tube_thr/gas1 ${WORK}/tube_thr/gas3")
 set_tests_properties(tube_threads_agree PROPERTIES LABELS "tube;regression" PROCESSORS 2)
+
+# --quiet holds for tube runs too (they printed the progress line on a terminal, and mpirun gives rank 0 one): run
+# under a pseudo-terminal (script, util-linux), no "ETA" line with --quiet, one without it.
+add_test(NAME tube_dynamics_quiet COMMAND bash -c
+         "cmd='${UNILAG_TUBE_SH} ${FLUTTER_SCENE} --set dynamics.end_time=3.0 --output ${WORK}/tube_quiet'; \
+          loud=$(script -qc \"$cmd\" /dev/null | grep -c ETA); \
+          quiet=$(script -qc \"$cmd --quiet\" /dev/null | grep -c ETA); \
+          echo \"progress lines: $loud without --quiet, $quiet with\"; [ $loud -ge 1 ] && [ $quiet -eq 0 ]")
+set_tests_properties(tube_dynamics_quiet PROPERTIES LABELS "tube;regression" PASS_REGULAR_EXPRESSION
+                     "progress lines: [1-9][0-9]* without --quiet, 0 with")

@@ -171,7 +171,7 @@ TEST(TubeRun, BadInputExitsTwoAndWritesNothing)
 {
     const fs::path out = scratch() / "bad";
     fs::remove_all(out);
-    EXPECT_EQ(unilag::runTube(kScene, {"stability.beta=[0.5,1.5]"}, out.string(), false, MPI_COMM_WORLD),
+    EXPECT_EQ(unilag::runTube(kScene, {"stability.beta=[0.5,1.5]"}, out.string(), false, true, MPI_COMM_WORLD),
               unilag::ExitInput);
     EXPECT_FALSE(fs::exists(out));
 }
@@ -180,7 +180,7 @@ TEST(TubeRun, WritesTheStabilityTable)
 {
     const fs::path out = scratch() / "ok";
     fs::remove_all(out);
-    ASSERT_EQ(unilag::runTube(physicalScene(), {}, out.string(), false, MPI_COMM_WORLD), unilag::ExitOk);
+    ASSERT_EQ(unilag::runTube(physicalScene(), {}, out.string(), false, true, MPI_COMM_WORLD), unilag::ExitOk);
     std::ifstream csv(out / "stability.csv");
     std::string header, row;
     std::getline(csv, header);
