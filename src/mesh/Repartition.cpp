@@ -94,6 +94,8 @@ std::vector<int> balancedOwners(const DistributedMesh& mesh, const MV& coords, c
     zp.set("algorithm", algorithm);
     zp.set("imbalance_tolerance", 1.05);
     zp.set("num_global_parts", mesh.comm->getSize());
+    // rcb runs Zoltan (1), whose default DEBUG_LEVEL 1 printed its ~40 parameters on every rank at each repartition
+    zp.sublist("zoltan_parameters").set("DEBUG_LEVEL", std::string("0"));
     Zoltan2::PartitioningProblem<Adapter> problem(&adapter, &zp, mesh.comm);
     problem.solve();
     const auto* parts = problem.getSolution().getPartListView();

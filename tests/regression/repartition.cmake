@@ -47,3 +47,9 @@ ${WORK}/impact2d_o2_np1 ${WORK}/repartition_impact2d_o2_np2 && ${PYTHON} ${SCRIP
 ${WORK}/repartition_impact2d_o2_np2")
 set_tests_properties(repartition_impact2d_agree PROPERTIES FIXTURES_REQUIRED "repartition_impact2d;impact2d"
                      LABELS "gpr;mpi;regression")
+# rcb (Zoltan 1 under Zoltan2) printed its ~40 parameters on every rank at each repartition, --quiet or not.
+add_test(NAME repartition_rcb_quiet COMMAND ${MPI_RUN} 3 ${UNILAG} run ${INPUTS}/sod2d.yaml --quiet --set mesh.size=0.05
+         --set time.end=0.05 --set parallel.partitioner=rcb --set parallel.imbalance_threshold=0
+         --set parallel.check_interval=1 --output ${WORK}/repartition_rcb_quiet)
+set_tests_properties(repartition_rcb_quiet PROPERTIES PROCESSORS 3 LABELS "mpi;regression"
+                     PASS_REGULAR_EXPRESSION "output in" FAIL_REGULAR_EXPRESSION "ZOLTAN")
