@@ -191,7 +191,8 @@ set_tests_properties(exact_solutions_selftest viscous_shock_becker heat_conducti
                      be_shell2d_v490 be_plate_run be_plate_period tau1_sweep PROPERTIES LABELS "regression;gpr")
 # IMEX ARS(2,2,2) (scheme.integrator: ars222, docs/gpr-model.md 2.6).
 #  - Time order at a fixed mesh: the vortex (944 cells) at CFL 0.4 and 0.2 against CFL 0.05, L2 differences of the
-#    final velocities falling at order >= 1.8 (measured 2.04; the midpoint integrator scores 1.69 here).
+#    final velocities and specific total energies each falling at order >= 1.8 (measured 2.055 / 2.049; the midpoint
+#    integrator scores 1.87 / 1.59 here, its energy first order in time: docs/ars222.md, session 32).
 #  - The tau1 sweep at order 2 with ars222: the same bounds as at order 1. Measured: |dev G|/tr G 4.7e-16 at 1e-14,
 #    dev G / Chapman-Enskog 0.996 at 1e-6, the elastic det G defect 5.9e-6 falling 3.87x at half the step
 #    (second order; midpoint 4.1e-6, 3.83x).
