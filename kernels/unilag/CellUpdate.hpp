@@ -22,7 +22,7 @@ struct UpdateCheck
     double minVolumeRatio; //!< min |T^{n+1}| / |T^n|
     double minSound2;      //!< min squared sound speed of the new states (must stay >= 0; 0: a cold gas)
     double maxGclDefect;   //!< max |m omega - |T^{n+1}|| / |T^{n+1}|
-    LO worstCell;          //!< a cell with the smallest volume ratio or internal energy (-1 if none bad)
+    LO worstCell;          //!< the lowest-index inadmissible cell (volume ratio <= 0 or c^2 < 0; -1 if none)
 };
 
 /*! The state the subcell forces of a step are computed from, if it is not the state being updated: at second order

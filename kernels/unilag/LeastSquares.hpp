@@ -280,7 +280,7 @@ void nodeSums(const MeshView<D>& mesh, const Q& quantities, const CellGeometry& 
     {
         const int fitted = nFit; // captured here: nvcc refuses a lambda's first capture inside `if constexpr`
         const Limiter bounded = limiter; // likewise captured here, for the same reason
-        double s[L::ncol], ref[NQ], wj[NQ];
+        double s[L::ncol], ref[NQ] = {}, wj[NQ]; // ref stays 0 at a node without corners (never a local one)
         for (int c = 0; c < L::ncol; ++c)
             s[c] = 0.0;
         const LO begin = mesh.nodeCornerOffsets(r), end = mesh.nodeCornerOffsets(r + 1);

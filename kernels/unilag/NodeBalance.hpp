@@ -58,18 +58,24 @@ void worstImbalance(const View<const LO*>& nodes, const Field& out, double force
     rates.worstNode = -1;
     if (count == 0)
         return;
-    // the largest imbalance, then the first node that has it (minima join element-wise, hence two passes)
-    double largest[1], first[1];
+    // the largest imbalance, then the first node that has it (minima join element-wise, hence two passes); a node
+    // whose forces are not finite counts as the largest (fmin would skip a nan, and nan > forceFloor is false)
+    const double huge = Kokkos::reduction_identity<double>::min();
     auto negated = KOKKOS_LAMBDA(const LO n, double(&acc)[1])
     {
-        if (out(n, L::scale) > forceFloor)
-            acc[0] = Kokkos::Experimental::fmin(acc[0], -out(n, L::imbalance));
+        const double scale = out(n, L::scale), imbalance = out(n, L::imbalance);
+        const bool finite = scale - scale == 0.0 && imbalance - imbalance == 0.0;
+        const double value = !finite ? -huge : (scale > forceFloor ? -imbalance : huge);
+        acc[0] = Kokkos::Experimental::fmin(acc[0], value);
     };
+    double largest[1], first[1];
     minReduce<1>("unilag::check::node_balance_max", count, negated, largest);
     const double worst = largest[0] < 0.0 ? largest[0] : 0.0;
     auto index = KOKKOS_LAMBDA(const LO n, double(&acc)[1])
     {
-        if (out(n, L::scale) > forceFloor && -out(n, L::imbalance) == worst && double(n) < acc[0])
+        double value[1] = {huge};
+        negated(n, value);
+        if (value[0] == worst && double(n) < acc[0])
             acc[0] = double(n);
     };
     minReduce<1>("unilag::check::node_balance_worst", count, index, first);

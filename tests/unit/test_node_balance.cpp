@@ -115,6 +115,10 @@ TEST(NodeBalance, HoldsAfterAStepAndCatchesEachFault)
             const auto floored = balance(hs, perturbed(hs, interior, 0, dv), 1.0);
             EXPECT_EQ(floored.worstNode, -1);
             EXPECT_EQ(floored.maxImbalance, 0.0);
+            // a non-finite node velocity is the worst imbalance, not skipped (nan > floor is false, fmin drops nan)
+            const auto notFinite = balance(hs, perturbed(hs, interior, 0, std::nan("")));
+            EXPECT_EQ(notFinite.worstNode, interior);
+            EXPECT_GT(notFinite.maxImbalance, 1e300);
 
             // an imposed pressure other than the one the nodes were solved with shows at the open side
             auto& md = hs.model;
