@@ -4,6 +4,7 @@
 
 #include <algorithm>
 #include <cstdio>
+#include <filesystem>
 #include <fstream>
 #include <iomanip>
 #include <set>
@@ -84,13 +85,24 @@ void writeRows(hid_t file, const std::string& fileName, const std::string& name,
 // Write via a temporary file and rename, so readers never see a half-written XML file.
 void writeFileAtomically(const std::string& path, const std::string& text) {
   const std::string tmp = path + ".tmp";
+  const auto discard = [&tmp] {  // no stray .tmp beside the outputs (only our own file: never a folder in the way)
+    std::error_code ec;
+    if (std::filesystem::is_regular_file(tmp, ec)) std::filesystem::remove(tmp, ec);
+  };
   {
     std::ofstream out(tmp, std::ios::trunc);
     out << text;
     out.flush();
-    if (!out) throw OutputError("XdmfWriter: cannot write " + tmp);
+    if (!out) {
+      out.close();
+      discard();
+      throw OutputError("XdmfWriter: cannot write " + tmp);
+    }
   }
-  if (std::rename(tmp.c_str(), path.c_str()) != 0) throw OutputError("XdmfWriter: cannot rename " + tmp + " to " + path);
+  if (std::rename(tmp.c_str(), path.c_str()) != 0) {
+    discard();
+    throw OutputError("XdmfWriter: cannot rename " + tmp + " to " + path);
+  }
 }
 
 std::string dataItem(long long rows, int cols, const char* numberType, const std::string& h5, const std::string& ds) {
