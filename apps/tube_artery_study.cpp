@@ -16,6 +16,8 @@
 // --tension F: the wall's axial force F_z (N), the Pedley-Luo term -T d_ss A with T = F_z / (4 pi A0) (0: none).
 #include <Kokkos_Core.hpp>
 
+#include "StudyArgs.hpp"
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -94,9 +96,7 @@ double cycleChange(const std::vector<std::vector<double>>& now, const std::vecto
 
 void writeWaveforms(const std::string& path, const std::vector<std::vector<double>>& cycle)
 {
-    FILE* f = std::fopen(path.c_str(), "w");
-    if (!f)
-        return;
+    FILE* f = unilag::study::openOutput("unilag_tube_artery", path);
     std::fprintf(f, "t_s,p_in_Pa,Q_in_m3s,p_mid_Pa,Q_mid_m3s,p_out_Pa,Q_out_m3s\n");
     for (size_t k = 0; k < cycle.size(); ++k)
     {
@@ -137,19 +137,26 @@ Options parse(int argc, char** argv)
     Options o;
     for (int i = 1; i < argc; ++i)
     {
+        const char* program = "unilag_tube_artery";
         if (!std::strcmp(argv[i], "--cells") && i + 1 < argc)
-            o.cells = std::atoi(argv[++i]);
+            o.cells = unilag::study::integerArg(program, "--cells", argv[++i], 2);
         else if (!std::strcmp(argv[i], "--out") && i + 1 < argc)
             o.out = argv[++i];
         else if (!std::strcmp(argv[i], "--throughput") && i + 1 < argc)
-            o.throughputCells = std::atoi(argv[++i]);
+            o.throughputCells = unilag::study::integerArg(program, "--throughput", argv[++i], 2);
         else if (!std::strcmp(argv[i], "--prefill"))
             o.prefill = true;
         else if (!std::strcmp(argv[i], "--tension") && i + 1 < argc)
-            o.tension = std::atof(argv[++i]);
+            o.tension = unilag::study::positiveArg(program, "--tension", argv[++i], true);
         else if (!std::strcmp(argv[i], "--no-serial"))
             o.serial = false;
+        else
+            unilag::study::fail(program, std::string("unknown option '") + argv[i] +
+                                     "' (options: --cells N, --out DIR, --throughput N, --prefill, --tension T, "
+                                     "--no-serial)");
     }
+    if (o.throughputCells == 0)
+        unilag::study::outputFolder("unilag_tube_artery", o.out);
     return o;
 }
 
@@ -160,9 +167,8 @@ int runCarotid(const Options& o)
     Artery a(cfg);
     if (o.prefill)
         a.setState(std::vector<double>(o.cells, a.area0()), std::vector<double>(o.cells, 0.0), kMeanFlow * cfg.R2);
-    FILE* log = std::fopen((o.out + "/tube_artery_cycles.csv").c_str(), "w");
-    if (log)
-        std::fprintf(log, "cycle,change_p,change_Q,wall_s\n");
+    FILE* log = unilag::study::openOutput("unilag_tube_artery", o.out + "/tube_artery_cycles.csv");
+    std::fprintf(log, "cycle,change_p,change_Q,wall_s\n");
     std::vector<std::vector<double>> last, cycle(kSamples);
     const auto t0 = std::chrono::steady_clock::now();
     double wall = 0, changeP = 1, changeQ = 1;
@@ -180,12 +186,10 @@ int runCarotid(const Options& o)
             changeP = cycleChange(cycle, last, 0);
             changeQ = cycleChange(cycle, last, 1);
         }
-        if (log)
-            std::fprintf(log, "%d,%.6g,%.6g,%.6g\n", m, changeP, changeQ, wall);
+        std::fprintf(log, "%d,%.6g,%.6g,%.6g\n", m, changeP, changeQ, wall);
         last = cycle;
     }
-    if (log)
-        std::fclose(log);
+    std::fclose(log);
     writeWaveforms(o.out + "/tube_artery_waveforms.csv", cycle);
     double pMax = 0, pMin = 1e30;
     for (const auto& row : cycle)

@@ -6,6 +6,8 @@
 // apps/tube_gas_rod_study_plot.py draws tube_gas_rod_energy.png.
 #include <Kokkos_Core.hpp>
 
+#include "StudyArgs.hpp"
+
 #include <algorithm>
 #include <chrono>
 #include <cmath>
@@ -122,8 +124,9 @@ void shockStudy(const std::string& dir)
 int main(int argc, char* argv[])
 {
     Kokkos::ScopeGuard guard(argc, argv);
-    const std::string dir = argc > 1 ? argv[1] : ".";
-    const double endTime = argc > 2 ? std::atof(argv[2]) : 4.0;
+    const char* program = "unilag_tube_gas_rod";
+    const std::string dir = unilag::study::outputFolder(program, argc > 1 ? argv[1] : ".");
+    const double endTime = argc > 2 ? unilag::study::positiveArg(program, "END_TIME", argv[2]) : 4.0;
     try
     {
         energyStudy(dir, endTime);

@@ -5,6 +5,8 @@
 // writes outdir/tube_shock_mach.csv and outdir/tube_sod_profile.csv; apps/tube_shock_study_plot.py draws them.
 #include <Kokkos_Core.hpp>
 
+#include "StudyArgs.hpp"
+
 #include <chrono>
 #include <cmath>
 #include <cstdio>
@@ -91,9 +93,7 @@ void sodProfile(const std::string& dir)
     gas.advanceTo(0.2);
     const GasFields fl = gas.fields();
     const std::string path = dir + "/tube_sod_profile.csv";
-    FILE* f = std::fopen(path.c_str(), "w");
-    if (!f)
-        return;
+    FILE* f = unilag::study::openOutput("unilag_tube_shock", path);
     std::fprintf(f, "s,rho,u,p,rho_exact,u_exact,p_exact\n");
     for (size_t j = 0; j < fl.s.size(); ++j)
     {
@@ -131,9 +131,10 @@ void benchmark(int cells, int steps, bool serial)
 int main(int argc, char* argv[])
 {
     Kokkos::ScopeGuard kokkos(argc, argv);
-    const std::string dir = argc > 1 ? argv[1] : ".";
-    const int cells = argc > 2 ? std::atoi(argv[2]) : 20000;
-    const int steps = argc > 3 ? std::atoi(argv[3]) : 200;
+    const char* program = "unilag_tube_shock";
+    const std::string dir = unilag::study::outputFolder(program, argc > 1 ? argv[1] : ".");
+    const int cells = argc > 2 ? unilag::study::integerArg(program, "CELLS", argv[2], 2) : 20000;
+    const int steps = argc > 3 ? unilag::study::integerArg(program, "STEPS", argv[3], 1) : 200;
     machStudy(dir);
     sodProfile(dir);
     for (bool serial : {false, true})

@@ -7,6 +7,8 @@
 // apps/tube_wall_shock_study_plot.py draws them.
 #include <Kokkos_Core.hpp>
 
+#include "StudyArgs.hpp"
+
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
@@ -68,7 +70,8 @@ struct ShockResult
 };
 
 /*! One shock tube: snapshots at 8 times; the shock at each is where p crosses (p1 + p2)/2, p2 the mean over
- *  [0.35, 0.7] m behind a first estimate of the front (the front is spread over ~0.3 m by the wall) (where p first exceeds p1 + 5% of p4 - p1). */
+ *  [0.35, 0.7] m behind a first estimate of the front (the front is spread over ~0.3 m by the wall) (where p first
+ *  exceeds p1 + 5% of p4 - p1). */
 ShockResult runShockTube(const WallCoefficients& w, double p4, int cells, const std::string& profilePath)
 {
     GasSetup setup;
@@ -100,7 +103,7 @@ ShockResult runShockTube(const WallCoefficients& w, double p4, int cells, const 
         x.push_back(leadingShockPosition(f, 0.5 * (kP1 + p2)));
     if (!profilePath.empty())
     {
-        FILE* out = std::fopen(profilePath.c_str(), "w");
+        FILE* out = unilag::study::openOutput("unilag_tube_wall_shock", profilePath);
         const WallFields wf = tube.wall().fields();
         std::fprintf(out, "s,p,rho,u,R\n");
         const GasFields& f = snaps.back();
@@ -117,14 +120,15 @@ int main(int argc, char* argv[])
 {
     Kokkos::ScopeGuard guard(argc, argv);
     std::setvbuf(stdout, nullptr, _IONBF, 0);
-    const std::string dir = argc > 1 ? argv[1] : ".";
-    const int cells = argc > 2 ? std::atoi(argv[2]) : 800;
+    const char* program = "unilag_tube_wall_shock";
+    const std::string dir = unilag::study::outputFolder(program, argc > 1 ? argv[1] : ".");
+    const int cells = argc > 2 ? unilag::study::integerArg(program, "CELLS", argv[2], 2) : 800;
     const WallCoefficients w = wallCoefficients(latex(), kP1);
     const double a1 = std::sqrt(kGamma * kP1 / kRho1), c1 = compliantSpeed(w, kRho1, kP1, kGamma);
     std::printf("latex wall: a = %.5g kg/m, b = %.5g N/m^2, c = %.3g N s/m^2, bulge limit p - p_ext = %.4g Pa\n",
                 w.a, w.b, w.c, w.b / (2.0 * 3.14159265358979323846));
     std::printf("air: a1 = %.2f m/s, compliant c1 = %.2f m/s\n", a1, c1);
-    FILE* out = std::fopen((dir + "/tube_wall_shock_mach.csv").c_str(), "w");
+    FILE* out = unilag::study::openOutput(program, dir + "/tube_wall_shock_mach.csv");
     std::fprintf(out, "p4_over_p1,p2_over_p1,shock_speed,mach_a1,mach_c1,mach_rigid_relation\n");
     for (double ratio : {1.05, 1.1, 1.2, 1.35, 1.5, 1.75, 2.0, 2.25, 2.5, 2.8})
     {
