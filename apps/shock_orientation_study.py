@@ -124,6 +124,7 @@ def main():
         check = (float(args[k + 1]), float(args[k + 2]))
         del args[k:k + 3]
     unilag, out_csv = os.path.abspath(args[0]), args[1]
+    os.makedirs(os.path.dirname(os.path.abspath(out_csv)), exist_ok=True)  # before the runs, not after them
     size = float(args[2]) if len(args) > 2 else 0.005
     strip = os.path.join(os.path.dirname(os.path.abspath(__file__)), "..", "inputs", "geometry", "strip2d.geo")
     rows, profiles = [], {}

@@ -40,9 +40,10 @@ def run_one(args, fraction):
     folder = os.path.join(args.out, "u%.4f" % fraction)
     cmd = [args.unilag, "run", args.scene, "--output", folder, "--set",
            "dynamics.flow.critical_fraction=%r" % fraction]
-    if args.end_time:
+    if args.end_time is not None:
         cmd += ["--set", "dynamics.end_time=%r" % args.end_time]
-    cmd += ["--set", "dynamics.fit_from=%r" % args.fit_from]
+    if args.fit_from is not None:  # else the scene's own, so that a fraction's figures are the scene's run
+        cmd += ["--set", "dynamics.fit_from=%r" % args.fit_from]
     for s in args.set:
         cmd += ["--set", s]
     subprocess.run(cmd, check=True, stdout=subprocess.DEVNULL)
@@ -95,8 +96,8 @@ def main():
     p.add_argument("out")
     p.add_argument("--fractions", default="0.98,1.02,1.1,1.2,1.3")
     p.add_argument("--end-time", type=float, default=None)
-    p.add_argument("--fit-from", type=float, default=0.05,
-                   help="fraction of the run after which the growth is fitted (below dynamics.fit_below of L)")
+    p.add_argument("--fit-from", type=float, default=None,
+                   help="fraction of the run after which the growth is fitted (default: the scene's dynamics.fit_from)")
     p.add_argument("--set", action="append", default=[])
     args = p.parse_args()
     os.makedirs(args.out, exist_ok=True)

@@ -28,7 +28,7 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 GEOMETRIC = os.path.join(ROOT, "inputs", "tube_rubber_geometric.yaml")
 EULER_BERNOULLI = os.path.join(ROOT, "inputs", "tube_rubber.yaml")
 SLENDERNESS = [5, 10, 20, 30, 50, 100, 200, 300, 1000]
-# K / R^2: u_cf rises steeply and the tube no longer flutters beyond about 0.035 (measured; speed_max u = 60)
+# K / R^2: u_cf rises steeply and the tube no longer flutters from 0.0325 (measured: 19.9 m/s at 0.03; speed_max u = 60)
 AREA_CHANGE = [0.0, 0.0025, 0.005, 0.0075, 0.01, 0.0125, 0.015, 0.0175, 0.02, 0.0225, 0.025, 0.0275, 0.03, 0.0325,
                0.035, 0.0375, 0.04, 0.05, 0.075, 0.1]
 
