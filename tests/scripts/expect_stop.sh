@@ -11,22 +11,16 @@
 set -u
 out=$1; case=$2; shift 3
 rm -rf "$out"
-want=2
-if [ "$case" = write_failure ]; then
-    mkdir -p "$out/unilag_000001.h5"
-    pattern="the output could not be written: .*unilag_000001.h5"
-elif [ "$case" = disk_full ]; then
-    mkdir -p "$out" && ln -s /dev/full "$out/unilag_000001.h5"
-    pattern="the output could not be written: .*unilag_000001.h5"
-elif [ "$case" = summary_in_the_way ]; then
-    mkdir -p "$out/summary.json"
-    pattern="the output could not be written: cannot write .*summary.json"
-elif [ "$case" = steps_full ]; then
-    mkdir -p "$out" && ln -s /dev/full "$out/steps.csv"
-    pattern="the output could not be written: cannot write .*steps.csv"
-else
-    want=5; pattern="stopped: time.max_steps = [0-9]+ reached at t = "
-fi
+want=2; unwritten="the output could not be written"
+case "$case" in
+    write_failure)      mkdir -p "$out/unilag_000001.h5"; pattern="$unwritten: .*unilag_000001.h5" ;;
+    disk_full)          mkdir -p "$out" && ln -s /dev/full "$out/unilag_000001.h5"
+                        pattern="$unwritten: .*unilag_000001.h5" ;;
+    summary_in_the_way) mkdir -p "$out/summary.json"; pattern="$unwritten: cannot write .*summary.json" ;;
+    steps_full)         mkdir -p "$out" && ln -s /dev/full "$out/steps.csv"
+                        pattern="$unwritten: cannot write .*steps.csv" ;;
+    *)                  want=5; pattern="stopped: time.max_steps = [0-9]+ reached at t = " ;;
+esac
 err=$("$@" --output "$out" 2>&1 >/dev/null); rc=$?
 echo "exit $rc: $err"
 [ "$rc" -eq "$want" ] || { echo "FAIL: expected exit code $want"; exit 1; }
