@@ -165,6 +165,18 @@ int main(int argc, char** argv)
         return unilag::ExitInput;
     }
     const unilag::ThreadCount threads = unilag::threadsPerRank(args.threads, MPI_COMM_WORLD);
+    // Kokkos' OpenMP backend (this Trilinos 13.2 build) crashes above 512 threads a process (520 segfaulted)
+    constexpr int maxThreads = 512;
+    int mostThreads = threads.threads;
+    MPI_Allreduce(MPI_IN_PLACE, &mostThreads, 1, MPI_INT, MPI_MAX, MPI_COMM_WORLD);
+    if (mostThreads > maxThreads)
+    {
+        if (rank == 0)
+            std::fprintf(stderr, "unilag: error: %d threads a rank (--threads or OMP_NUM_THREADS): at most %d; run "
+                                 "more ranks instead\n", mostThreads, maxThreads);
+        MPI_Finalize();
+        return unilag::ExitInput;
+    }
     if (!threads.warning.empty())
         std::fprintf(stderr, "unilag: warning: %s\n", threads.warning.c_str());
     Kokkos::InitArguments kargs;

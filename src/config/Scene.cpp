@@ -168,9 +168,13 @@ void readMeshSection(ConfigNode& root, Scene& s)
         s.meshSize = mesh.positive("size", 0.0, true);
         if (!fs::exists(s.geometry))
             mesh.fail("geometry", "file not found: " + s.geometry);
+        else if (!fs::is_regular_file(s.geometry)) // a folder, or a FIFO that would block the reader for ever
+            mesh.fail("geometry", "not a regular file: " + s.geometry);
     }
     else if (!fs::exists(s.meshFile))
         mesh.fail("file", "file not found: " + s.meshFile);
+    else if (!fs::is_regular_file(s.meshFile))
+        mesh.fail("file", "not a regular file: " + s.meshFile);
     mesh.rejectUnknown();
 }
 
@@ -418,6 +422,8 @@ void readExact(ConfigNode& root, Scene& s)
     s.exactTable = resolvePath(s.directory, x.text("table", "", sedov));
     if (sedov && !fs::exists(s.exactTable))
         x.fail("table", "file not found: " + s.exactTable);
+    else if (sedov && !fs::is_regular_file(s.exactTable))
+        x.fail("table", "not a regular file: " + s.exactTable);
     double tableEnd = 0.0;
     if (sedov)
     {

@@ -171,6 +171,8 @@ Teuchos::RCP<Teuchos::ParameterList> readYaml(const std::string& file, const std
 {
     if (!fs::exists(file))
         throw InputError(file + ": scene file not found");
+    if (!fs::is_regular_file(file)) // a folder, or a FIFO that would block the reader for ever
+        throw InputError(file + ": not a regular file");
     Teuchos::RCP<Teuchos::ParameterList> list;
     try
     {
@@ -179,9 +181,14 @@ Teuchos::RCP<Teuchos::ParameterList> readYaml(const std::string& file, const std
     catch (const std::exception& e)
     {
         std::string msg = e.what();
-        // keep the parser's first line: it names the line and column
+        // keep the parser's first line: it names the line and column; a Teuchos assertion's first line is its own
+        // source path (a list or section inside a list, a list as the top-level entry), which tells a user nothing
         const auto nl = msg.find('\n', msg.find_first_not_of('\n'));
-        throw InputError(file + ": malformed YAML: " + msg.substr(0, nl));
+        std::string first = msg.substr(0, nl);
+        if (first.find(".hpp:") != std::string::npos || first.find(".cpp:") != std::string::npos)
+            first = "a list or section where a single value belongs (inside a list such as [0.0, [1]], or as the "
+                    "top-level entry); the YAML reader does not say which line";
+        throw InputError(file + ": malformed YAML: " + first);
     }
     if (list->name() != top)
         throw InputError(file + ": the top-level key must be '" + top + ":', found '" + list->name() + "'");

@@ -10,6 +10,20 @@ add_test(NAME error_negative_density COMMAND bash ${SCRIPTS}/expect_error.sh ${W
          "sedov2d.yaml: key 'regions.gas.density': must be positive" -- ${UNILAG} run ${INPUTS}/sedov2d.yaml --set regions.gas.density=-1.0)
 add_test(NAME error_missing_mesh COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err5 "key 'mesh.geometry': file not found"
          -- ${UNILAG} run ${INPUTS}/sedov2d.yaml --set mesh.geometry=nowhere.geo)
+# A list inside a list (Teuchos' assertion named only its own source file), a FIFO as the scene or the mesh (the
+# reader blocked for ever), more threads than Kokkos' OpenMP backend survives (520 segfaulted).
+add_test(NAME error_nested_list COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err_nested
+         "error_nested_list.yaml: malformed YAML: a list or section where a single value belongs" -- ${UNILAG} run
+         ${SCENES}/error_nested_list.yaml)
+add_test(NAME error_fifo_inputs COMMAND bash -c "rm -f ${WORK}/fifo.yaml ${WORK}/fifo.geo && mkfifo ${WORK}/fifo.yaml \
+         ${WORK}/fifo.geo && bash ${SCRIPTS}/expect_error.sh ${WORK}/err_fifo1 'fifo.yaml: not a regular file' -- \
+         timeout 20 ${UNILAG} run ${WORK}/fifo.yaml && bash ${SCRIPTS}/expect_error.sh ${WORK}/err_fifo2 \
+         \"key 'mesh.geometry': not a regular file: .*fifo.geo\" -- timeout 20 ${UNILAG} run ${INPUTS}/sedov2d.yaml \
+         --quiet --set mesh.geometry=${WORK}/fifo.geo")
+add_test(NAME error_too_many_threads COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err_threads
+         "600 threads a rank \\(--threads or OMP_NUM_THREADS\\): at most 512" -- ${UNILAG} run ${SMALL_SEDOV}
+         --threads 600)
+set_tests_properties(error_nested_list error_fifo_inputs error_too_many_threads PROPERTIES LABELS regression)
 # A malformed .msh is refused with its line before gmsh reads it (mesh/MshCheck.hpp): gmsh 4.8 crashed (segmentation
 # fault) on the first, a node line without z, as on many of apps/fuzz_scenes.py's --mesh cases; the second (format
 # 4.1, an element's node that does not exist) gmsh refused itself, without the line.
