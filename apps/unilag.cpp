@@ -37,8 +37,8 @@ options:
                      exit 3 with the failing figure otherwise
   --restart FILE     continuum: continue the run from a checkpoint (output.checkpoint_interval writes
                      <DIR>/checkpoint.h5) on any number of ranks; the output series goes on in DIR
-  --threads N        OpenMP threads per rank (default: OMP_NUM_THREADS if set, else the CPUs this rank may run
-                     on, divided among the node's ranks that may run on them)
+  --threads N        OpenMP threads per rank, at most 512 (default: OMP_NUM_THREADS if set, else the CPUs this
+                     rank may run on, divided among the node's ranks that may run on them)
   --quiet            no progress line
 
 output: <DIR>/unilag.xmf (open in ParaView), unilag_NNNNNN.h5, scene.yaml (resolved scene), summary.json,
@@ -207,7 +207,8 @@ int main(int argc, char** argv)
             if (rank == 0)
                 std::fprintf(stderr, "unilag: error: the output could not be written: %s\n", e.what());
             // HDF5 may hold a file it failed to close (disk full), which its clean-up in MPI_Finalize then crashes
-            // on (exit 139; h5py #914 reports the same): end here, every rank having met the same error
+            // on (exit 139; h5py #914 reports the same): end here. A dump's error reaches every rank alike; for a
+            // file rank 0 writes alone (summary.json, a CSV), its exit makes mpirun end the others
             std::fflush(nullptr);
             std::_Exit(unilag::ExitInput);
         }
