@@ -64,9 +64,11 @@ template <class Functor> struct InOrderScan
     }
 };
 
-template <class Functor> void scan(const char* name, int n, bool serial, const Functor& f)
+//! One thread's work: on Kokkos::Serial whatever `serial` says where the views are host-accessible (an OpenMP launch
+//! of one iteration would fork a team for nothing).
+template <class Functor> void scan(const char* name, int n, bool /*serial*/, const Functor& f)
 {
-    forEach(name, 1, serial, InOrderScan<Functor>{f, n});
+    forEach(name, 1, true, InOrderScan<Functor>{f, n});
 }
 
 } // namespace unilag::tube::launch
