@@ -2,10 +2,13 @@
 
 #include <cmath>
 #include <filesystem>
+#include <fstream>
+#include <iterator>
 #include <sstream>
 
 #include <Teuchos_YamlParameterListHelpers.hpp>
 
+#include "config/ListWords.hpp"
 #include "physics/Expression.hpp"
 
 namespace unilag::config
@@ -173,6 +176,10 @@ Teuchos::RCP<Teuchos::ParameterList> readYaml(const std::string& file, const std
         throw InputError(file + ": scene file not found");
     if (!fs::is_regular_file(file)) // a folder, or a FIFO that would block the reader for ever
         throw InputError(file + ": not a regular file");
+    {
+        std::ifstream in(file);
+        rejectWordsInLists(file, std::string(std::istreambuf_iterator<char>(in), {}));
+    }
     Teuchos::RCP<Teuchos::ParameterList> list;
     try
     {

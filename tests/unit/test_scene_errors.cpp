@@ -6,6 +6,7 @@
 #include <vector>
 
 #include "SceneFixture.hpp"
+#include "config/ListWords.hpp"
 #include "config/Scene.hpp"
 
 using namespace unilag_test;
@@ -275,4 +276,25 @@ TEST(SceneErrors, ParallelSection)
                "parallel.imbalance_threshold");
     sceneError(dir, replaced(parallel, "repartition: false", "repartition: maybe"), "parallel.repartition");
     sceneError(dir, replaced(parallel, "check_interval: 20", "check_every: 20"), "parallel.check_every");
+}
+
+// Teuchos types a list by its numbers and reads every item as one: [true, 0.0] was [0, 0], silently.
+TEST(SceneErrors, TrueFalseInAList)
+{
+    TempDir dir;
+    auto error = [&](const std::string& list) {
+        const std::string file = dir.write("scene.yaml", replaced(sedovScene(), "velocity: [0.0, 0.0]", list));
+        return inputError([&] { unilag::readScene(file, {}); });
+    };
+    EXPECT_PRED2(contains, error("velocity: [true, 0.0]"), "scene.yaml: line 11: 'true' in a list");
+    EXPECT_PRED2(contains, error("velocity: [0.0,\n        No]"), "scene.yaml: line 12: 'No' in a list");
+}
+
+TEST(SceneErrors, ListWordsScanSkipsQuotesAndComments)
+{
+    using unilag::config::rejectWordsInLists;
+    EXPECT_NO_THROW(rejectWordsInLists("f", "a: [\"true\", 'no']  # [yes]\nb: \"[false]\"\nc: [1, 2]\n"));
+    EXPECT_NO_THROW(rejectWordsInLists("f", "title: Kidder's [shell]\nd: [notrue, yesno]\n"));
+    EXPECT_THROW(rejectWordsInLists("f", "a:\n  - 1.0\n  - yes\n"), unilag::InputError);
+    EXPECT_THROW(rejectWordsInLists("f", "a: [1, [2, FALSE]]\n"), unilag::InputError);
 }
