@@ -93,10 +93,12 @@ Args parse(int argc, char** argv)
             a.sets.push_back(value("--set"));
         else if (s.rfind("--set=", 0) == 0)
             a.sets.push_back(s.substr(6));
-        else if (s == "--output")
-            a.output = value("--output");
-        else if (s == "--restart")
-            a.restart = value("--restart");
+        else if (s == "--output" || s == "--restart")
+        {
+            (s == "--output" ? a.output : a.restart) = value(s.c_str());
+            if (a.error.empty() && argv[i][0] == '\0')
+                a.error = s + " needs a folder, found an empty string";
+        }
         else if (s == "--check")
             a.check = true;
         else if (s == "--quiet")

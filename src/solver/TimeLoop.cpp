@@ -281,7 +281,7 @@ class Progress
  *  and clipped to the next output time; unclipped is the step before that clip. Sets failure if it is not positive
  *  or has collapsed. */
 double chooseStep(TimeSystem& system, const TimeControl& c, double t, double dtPrev, long step, double nextOutput,
-                  double& unclipped, std::string& failure)
+                  double& largestStable, double& unclipped, std::string& failure)
 {
     double dt = system.prepareStep(t, step);
     if (!(dt > 0.0) || !std::isfinite(dt))
@@ -289,8 +289,10 @@ double chooseStep(TimeSystem& system, const TimeControl& c, double t, double dtP
         failure = "the stable time step is " + jsonNumber(dt) + " at t = " + jsonNumber(t);
         return 0.0;
     }
+    largestStable = std::max(largestStable, dt);
     dt = dtPrev > 0.0 ? std::min(dt, c.maxGrowth * dtPrev) : 0.1 * dt;
-    if (dt < 1e-12 * c.endTime)
+    // collapsed: 1e-12 of the end time, or of 1e4 of the run's largest steps where the end time is far beyond them
+    if (dt < 1e-12 * std::min(c.endTime, 1e4 * largestStable))
     {
         failure = system.collapse(t, dt, step);
         return 0.0;
@@ -355,7 +357,8 @@ LoopResult runTimeLoop(TimeSystem& system, const TimeControl& c, MPI_Comm comm, 
             }
             balance.startStep();
             double unclipped = 0.0;
-            double dt = chooseStep(system, c, s.t, s.dtPrev, s.steps, s.nextOutput, unclipped, r.failure);
+            double dt = chooseStep(system, c, s.t, s.dtPrev, s.steps, s.nextOutput, s.largestStable, unclipped,
+                                   r.failure);
             if (!r.failure.empty())
                 break;
             // Rejected steps (an inverted cell, an inadmissible state, an unconverged implicit solve) are retried

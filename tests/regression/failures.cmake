@@ -24,6 +24,15 @@ add_test(NAME error_too_many_threads COMMAND bash ${SCRIPTS}/expect_error.sh ${W
          "600 threads a rank \\(--threads or OMP_NUM_THREADS\\): at most 512" -- ${UNILAG} run ${SMALL_SEDOV}
          --threads 600)
 set_tests_properties(error_nested_list error_fifo_inputs error_too_many_threads PROPERTIES LABELS regression)
+# An empty --output or --restart was ignored (the scene's folder written instead); an end time far beyond the run's
+# steps (1e300) was reported as a collapsed time step at t = 0 (exit 4): it runs to time.max_steps (exit 5).
+add_test(NAME error_empty_output_option COMMAND bash -c "msg=$(${UNILAG} run ${INPUTS}/sod2d.yaml --quiet \
+         --output '' 2>&1); rc=$?; echo \"$msg\"; [ $rc -eq 2 ] && echo \"$msg\" | grep -q -e \
+         '--output needs a folder, found an empty string'")
+add_test(NAME end_time_far_runs_to_step_cap COMMAND bash -c "msg=$(${UNILAG} run ${INPUTS}/sod2d.yaml --quiet \
+         --set time.end=1e300 --set time.max_steps=20 --set output.interval=0 --output ${WORK}/far_end 2>&1); \
+         rc=$?; echo \"$msg\"; [ $rc -eq 5 ] && echo \"$msg\" | grep -q 'time.max_steps = 20 reached'")
+set_tests_properties(error_empty_output_option end_time_far_runs_to_step_cap PROPERTIES LABELS regression)
 # A malformed .msh is refused with its line before gmsh reads it (mesh/MshCheck.hpp): gmsh 4.8 crashed (segmentation
 # fault) on the first, a node line without z, as on many of apps/fuzz_scenes.py's --mesh cases; the second (format
 # 4.1, an element's node that does not exist) gmsh refused itself, without the line.
