@@ -333,6 +333,11 @@ std::array<std::complex<double>, 2> dispersionOmega(double k, double u, double b
     return {k * (convected + root), k * (convected - root)};
 }
 
+int freeDofCount(const TubeDiscretisation& disc)
+{
+    return int(freeDofs(*makeElement(disc.model, disc.geometric), disc.elements, disc.left, disc.right).size());
+}
+
 TubeDiscretisation sceneDiscretisation(const TubeScene& scene)
 {
     TubeDiscretisation d;

@@ -62,6 +62,9 @@ TubeDiscretisation geometricDiscretisation(const PhysicalTube& tube, int element
 //! geometric parameters).
 TubeDiscretisation sceneDiscretisation(const TubeScene& scene);
 
+//! The finite-element dofs the ends leave free (the most modes a Galerkin projection can keep).
+int freeDofCount(const TubeDiscretisation& disc);
+
 //! How the first crossing is searched: a scan in u, then bisection.
 struct ScanOptions
 {

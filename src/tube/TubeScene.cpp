@@ -6,6 +6,7 @@
 #include <Teuchos_YamlParameterListHelpers.hpp>
 
 #include "config/Walker.hpp"
+#include "tube/LinearStability.hpp"
 
 namespace unilag::tube
 {
@@ -133,6 +134,15 @@ void readStability(ConfigNode& root, TubeScene& s)
     study.locusModes = int(st.integer("locus_modes", study.locusModes, 1, 50));
     study.locusPoints = int(st.integer("locus_points", study.locusPoints, 2, 100000));
     study.locusSpeedFactor = st.positive("locus_speed_factor", study.locusSpeedFactor);
+    // more modes than the elements have dofs kept them all, silently; the loci's extra columns were nan
+    const int dofs = freeDofCount(sceneDiscretisation(s)), kept = study.modes > 0 ? study.modes : dofs;
+    if (study.modes > dofs)
+        st.fail("modes", "at most the " + std::to_string(dofs) + " degrees of freedom of " +
+                             std::to_string(study.elements) + " elements with these ends, found " +
+                             std::to_string(study.modes) + " (0 keeps them all)");
+    if (study.locusModes > kept)
+        st.fail("locus_modes", "at most the study's " + std::to_string(kept) + " modes, found " +
+                                   std::to_string(study.locusModes));
     st.rejectUnknown();
 }
 

@@ -42,6 +42,11 @@ tube_error(aspirating "tube_stability.yaml: key 'ends.left': the fluid enters at
            --set ends.left=free --set ends.right=clamped)
 tube_error(radii "tube_stability.yaml: key 'tube.inner_radius': must be less than outer_radius"
            --set tube.outer_radius=0.005 --set tube.inner_radius=0.007)
+# More modes than dofs kept every dof, silently; more locus modes than modes wrote nan columns.
+tube_error(too_many_modes "tube_stability.yaml: key 'stability.modes': at most the 20 degrees of freedom of 10 elements"
+           --set stability.elements=10 --set stability.modes=21)
+tube_error(locus_modes "tube_stability.yaml: key 'stability.locus_modes': at most the study's 2 modes, found 4"
+           --set stability.modes=2)
 tube_error(unknown_key "tube_stability.yaml: key 'stability.speed_mx': unknown key \\(did you mean 'stability.speed_max'"
            --set stability.speed_mx=3.0)
 
