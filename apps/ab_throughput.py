@@ -14,6 +14,8 @@ import subprocess
 import sys
 import tempfile
 
+import script_args
+
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 SEDOV = [os.path.join(ROOT, "inputs", "sedov2d.yaml"), "--quiet", "--set", "mesh.size=0.0072", "--set",
          "time.end=0.15", "--set", "output.enabled=false"]
@@ -37,8 +39,13 @@ def sedov(build, threads):
 
 
 def main():
-    a, b, out = sys.argv[1:4]
-    rest = [x for x in sys.argv[4:] if x != "--no-sedov"]
+    args = [x for x in sys.argv[1:] if x != "--no-sedov"]
+    if any(x in ("-h", "--help") for x in args):
+        sys.exit(print(__doc__))
+    if not 3 <= len(args) <= 5 or any(x.startswith("--") for x in args):
+        script_args.fail(f"expected BUILD_A BUILD_B OUT.csv [ROUNDS] [BENCH_FILTER] [--no-sedov], found {sys.argv[1:]}")
+    a, b, out = args[:3]
+    rest = args[3:]
     rounds = int(rest[0]) if rest else 5
     flt = rest[1] if len(rest) > 1 else "variant_step/.*/64k"
     cases = [(f"^{n}$", n) for n in bench(a, flt)]  # one warm-up pass, which also lists the cases

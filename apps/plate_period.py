@@ -8,10 +8,12 @@ crossings), which is what work_precision.py's `script:` measure reads. tests/scr
 usage: plate_period.py OUTDIR [RADIUS]
 """
 import glob
+import os
 import re
-import sys
 
 import numpy as np
+
+import script_args
 
 
 def centre_velocity(out, radius):
@@ -56,6 +58,7 @@ def period(out, radius=1.5e-3):
 
 
 if __name__ == "__main__":
-    if len(sys.argv) < 2:
-        sys.exit(__doc__)
-    print(period(sys.argv[1], float(sys.argv[2]) if len(sys.argv) > 2 else 1.5e-3)[0])
+    args = script_args.positional(1, __doc__, 2)
+    if not glob.glob(os.path.join(args[0], "unilag_*.h5")):
+        script_args.fail(f"{args[0]}: no dumps unilag_*.h5 (the output folder of a be_plate2d run)")
+    print(period(args[0], script_args.number(args[1], "RADIUS") if len(args) > 1 else 1.5e-3)[0])

@@ -11,10 +11,11 @@ import csv
 import glob
 import os
 import subprocess
-import sys
 
 import h5py
 import numpy as np
+
+import script_args
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 SCENE = os.path.join(HERE, "..", "tests", "scenes", "spinning_ring.yaml")
@@ -40,9 +41,12 @@ def spin(path):
 
 
 def main():
-    unilag, out = sys.argv[1:3]
-    sizes = [float(s) for s in (sys.argv[3] if len(sys.argv) > 3 else "0.025,0.0125").split(",")]
-    end = float(sys.argv[4]) if len(sys.argv) > 4 else 15.0
+    args = script_args.positional(2, __doc__, 4)
+    unilag, out = args[:2]
+    if not os.access(unilag, os.X_OK):
+        script_args.fail(f"UNILAG: {unilag} is not an executable")
+    sizes = [script_args.number(s, "SIZES") for s in (args[2] if len(args) > 2 else "0.025,0.0125").split(",")]
+    end = script_args.number(args[3], "END") if len(args) > 3 else 15.0
     work = os.path.splitext(out)[0] + "_runs"
     rows = []
     for h in sizes:

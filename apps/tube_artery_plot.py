@@ -7,12 +7,12 @@ Usage: tube_artery_plot.py OUTPUT_DIR   (reads tube_artery_waveforms.csv, tube_a
 """
 import csv
 import os
-import sys
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+import script_args  # noqa: E402
 
 MMHG = 133.322
 PROBES = (("in", "inlet (s = 0)", "tab:red"), ("mid", "middle (s = L/2)", "tab:green"),
@@ -25,8 +25,8 @@ def read(path):
 
 
 def main(out):
-    waves = read(os.path.join(out, "tube_artery_waveforms.csv"))
-    cycles = read(os.path.join(out, "tube_artery_cycles.csv"))
+    waves = read(script_args.input_file(out, "tube_artery_waveforms.csv"))
+    cycles = read(script_args.input_file(out, "tube_artery_cycles.csv"))
     t = [float(r["t_s"]) for r in waves]
     fig, axes = plt.subplots(1, 3, figsize=(15, 4.2))
     for key, label, colour in PROBES:
@@ -49,4 +49,5 @@ def main(out):
 
 
 if __name__ == "__main__":
-    main(sys.argv[1] if len(sys.argv) > 1 else "output/tube_artery")
+    args = script_args.positional(0, "usage: tube_artery_plot.py [OUTPUT_DIR]   (default output/tube_artery)", 1)
+    main(args[0] if args else "output/tube_artery")

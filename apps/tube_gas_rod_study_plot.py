@@ -4,17 +4,18 @@
     python3 apps/tube_gas_rod_study_plot.py [dir=.]  ->  dir/tube_gas_rod_energy.png
 """
 import csv
-import sys
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+import script_args  # noqa: E402
 
 
 def main():
-    d = sys.argv[1] if len(sys.argv) > 1 else "."
-    with open(f"{d}/tube_gas_rod_energy.csv") as f:
+    args = script_args.positional(0, "usage: tube_gas_rod_study_plot.py [OUTPUT_DIR]   (default .)", 1)
+    d = args[0] if args else "."
+    with open(script_args.input_file(d, "tube_gas_rod_energy.csv")) as f:
         rows = list(csv.DictReader(f))
     runs = {}
     for r in rows:

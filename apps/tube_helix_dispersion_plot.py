@@ -7,12 +7,12 @@ Usage: tube_helix_dispersion_plot.py OUTPUT_DIR   (writes dispersion_<model>.png
 """
 import csv
 import os
-import sys
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+import script_args  # noqa: E402
 
 COLOURS = {"K0_p0": "tab:red", "K0_f0": "0.4", "K0.5": "tab:blue", "K1": "tab:green"}
 LABELS = {"K0_p0": "K = 0, p0 = 0", "K0_f0": "K = 0, f0 = 0", "K0.5": "K = 0.5", "K1": "K = 1"}
@@ -63,13 +63,11 @@ def stability(rows, out):
 
 
 def main():
-    if len(sys.argv) != 2:
-        sys.exit(__doc__)
-    out = sys.argv[1]
-    rows = read(os.path.join(out, "dispersion.csv"))
+    out = script_args.positional(1, __doc__)[0]
+    rows = read(script_args.input_file(out, "dispersion.csv"))
     for model in ("geometric", "inextensible"):
         dispersion(rows, model, out)
-    stability(read(os.path.join(out, "stability.csv")), out)
+    stability(read(script_args.input_file(out, "stability.csv")), out)
 
 
 if __name__ == "__main__":

@@ -5,12 +5,12 @@
 """
 import csv
 import math
-import sys
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+import script_args  # noqa: E402
 
 GAMMA = 1.4
 
@@ -22,8 +22,9 @@ def read(path):
 
 
 def main():
-    d = sys.argv[1] if len(sys.argv) > 1 else "."
-    m = read(f"{d}/tube_shock_mach.csv")
+    args = script_args.positional(0, "usage: tube_shock_study_plot.py [OUTPUT_DIR]   (default .)", 1)
+    d = args[0] if args else "."
+    m = read(script_args.input_file(d, "tube_shock_mach.csv"))
     ratios = [1 + i * 0.05 for i in range(int(49 / 0.05) + 1)]
     relation = [math.sqrt(1 + (GAMMA + 1) / (2 * GAMMA) * (r - 1)) for r in ratios]
     fig, (a, b) = plt.subplots(1, 2, figsize=(10, 4))
@@ -44,7 +45,7 @@ def main():
     fig.tight_layout()
     fig.savefig(f"{d}/tube_shock_mach.png", dpi=120)
 
-    s = read(f"{d}/tube_sod_profile.csv")
+    s = read(script_args.input_file(d, "tube_sod_profile.csv"))
     fig, axes = plt.subplots(1, 3, figsize=(12, 3.5))
     for ax, k in zip(axes, ["rho", "u", "p"]):
         ax.plot(s["s"], s[k + "_exact"], "k-", lw=1, label="exact")

@@ -8,12 +8,12 @@ Usage: tube_stability_plot.py OUTPUT_DIR
 """
 import csv
 import math
-import sys
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+import script_args  # noqa: E402
 
 
 def read_csv(path):
@@ -55,9 +55,9 @@ def plot_loci(ax, rows, beta, ucf):
 
 
 def main():
-    folder = sys.argv[1]
-    rows = read_csv(f"{folder}/stability.csv")
-    loci = read_csv(f"{folder}/stability_loci.csv")
+    folder = script_args.positional(1, "usage: tube_stability_plot.py OUTPUT_DIR   (a tube stability run's folder)")[0]
+    rows = read_csv(script_args.input_file(folder, "stability.csv"))
+    loci = read_csv(script_args.input_file(folder, "stability_loci.csv"))
     betas = [float(r["beta"]) for r in rows]
     panels = 1 + len(betas)
     cols = min(4, panels)

@@ -5,12 +5,12 @@
 """
 import csv
 import math
-import sys
 
 import matplotlib
 
 matplotlib.use("Agg")
 import matplotlib.pyplot as plt  # noqa: E402
+import script_args  # noqa: E402
 
 GAMMA = 1.4
 
@@ -22,8 +22,9 @@ def read(path):
 
 
 def main():
-    d = sys.argv[1] if len(sys.argv) > 1 else "."
-    m = read(f"{d}/tube_wall_shock_mach.csv")
+    args = script_args.positional(0, "usage: tube_wall_shock_study_plot.py [OUTPUT_DIR]   (default .)", 1)
+    d = args[0] if args else "."
+    m = read(script_args.input_file(d, "tube_wall_shock_mach.csv"))
     ratios = [1 + i * 0.01 for i in range(int(max(m["p2_over_p1"]) * 100) - 99)]
     rigid = [math.sqrt(1 + (GAMMA + 1) / (2 * GAMMA) * (r - 1)) for r in ratios]
     fig, ax = plt.subplots(figsize=(6, 4.5))

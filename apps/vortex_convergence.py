@@ -89,6 +89,7 @@ def plot(rows, path):
             ax.loglog([r["h"] for r in mine], [r["floor_" + k] for r in mine], "k--", lw=0.8,
                       label="geometric floor (exact node paths)")
         ax.set_xlabel("h on the final mesh")
+        ax.set_ylabel(f"L2 error of the {k.replace('_', ' ')}")
         ax.set_title(f"L2 error, {k.replace('_', ' ')}", fontsize=9)
         ax.legend(fontsize=7)
     fig.tight_layout()

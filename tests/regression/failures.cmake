@@ -33,6 +33,9 @@ add_test(NAME end_time_far_runs_to_step_cap COMMAND bash -c "msg=$(${UNILAG} run
          --set time.end=1e300 --set time.max_steps=20 --set output.interval=0 --output ${WORK}/far_end 2>&1); \
          rc=$?; echo \"$msg\"; [ $rc -eq 5 ] && echo \"$msg\" | grep -q 'time.max_steps = 20 reached'")
 set_tests_properties(error_empty_output_option end_time_far_runs_to_step_cap PROPERTIES LABELS regression)
+# The study and plot scripts in apps/ gave Python tracebacks on a bad argument or a missing input folder.
+add_test(NAME apps_script_errors COMMAND bash ${SCRIPTS}/script_errors.sh ${PYTHON} ${PROJECT_SOURCE_DIR}/apps)
+set_tests_properties(apps_script_errors PROPERTIES LABELS regression PASS_REGULAR_EXPRESSION "script_errors: PASS")
 # A malformed .msh is refused with its line before gmsh reads it (mesh/MshCheck.hpp): gmsh 4.8 crashed (segmentation
 # fault) on the first, a node line without z, as on many of apps/fuzz_scenes.py's --mesh cases; the second (format
 # 4.1, an element's node that does not exist) gmsh refused itself, without the line.
