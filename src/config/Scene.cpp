@@ -356,6 +356,8 @@ void readOutput(ConfigNode& root, Scene& s)
     s.outputInterval = o.nonNegative("interval", 0.0);
     s.checkpointInterval = o.nonNegative("checkpoint_interval", 0.0);
     s.writeOutput = o.boolean("enabled", true);
+    if (s.writeOutput)
+        refuseTooManyDumps(o, "interval", s.outputInterval, s.endTime);
     o.rejectUnknown();
 }
 

@@ -87,6 +87,10 @@ class ConfigNode
 //! A number for a message: the shortest of fixed and scientific (1e-14 stays readable, unlike std::to_string).
 std::string num(double v);
 
+/*! Refuses an output interval (key of node) that makes more than 100,000 dumps to endTime: each dump clips the step
+ *  to its time, so a tiny interval fills the disk and stalls the run. 0 (first and last states only) passes. */
+void refuseTooManyDumps(const ConfigNode& node, const std::string& key, double interval, double endTime);
+
 //! p resolved against the scene's folder dir (absolute paths stay as they are).
 std::string resolvePath(const std::string& dir, const std::string& p);
 

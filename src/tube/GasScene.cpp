@@ -14,6 +14,7 @@ namespace
 
 using config::ConfigNode;
 using config::num;
+using config::refuseTooManyDumps;
 constexpr double pi_ = 3.14159265358979323846;
 
 //! A state {density, velocity, pressure}: density and pressure positive (an ideal gas has no vacuum state).
@@ -255,6 +256,7 @@ GasSettings readGas(ConfigNode& g)
     readInitial(g, s);
     s.endTime = g.positive("end_time", s.endTime, true);
     s.outputInterval = g.nonNegative("output_interval", s.outputInterval);
+    refuseTooManyDumps(g, "output_interval", s.outputInterval, s.endTime);
     if (g.has("wall") && g.has("rod"))
         g.fail("rod", "a free tube (gas.rod) has a rigid radius: give gas.wall or gas.rod, not both");
     if (g.has("wall"))

@@ -52,6 +52,7 @@ DynamicsSettings readDynamics(ConfigNode& d)
     p.rejectUnknown();
     s.gravity = threeNumbers(d, "gravity", s.gravity);
     s.outputInterval = d.nonNegative("output_interval", s.outputInterval);
+    config::refuseTooManyDumps(d, "output_interval", s.outputInterval, s.endTime);
     s.tipRows = int(d.integer("tip_rows", s.tipRows, 2, 100000000));
     s.fitFrom = d.nonNegative("fit_from", s.fitFrom);
     if (s.fitFrom >= 1.0)

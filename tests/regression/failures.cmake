@@ -33,6 +33,14 @@ add_test(NAME end_time_far_runs_to_step_cap COMMAND bash -c "msg=$(${UNILAG} run
          --set time.end=1e300 --set time.max_steps=20 --set output.interval=0 --output ${WORK}/far_end 2>&1); \
          rc=$?; echo \"$msg\"; [ $rc -eq 5 ] && echo \"$msg\" | grep -q 'time.max_steps = 20 reached'")
 set_tests_properties(error_empty_output_option end_time_far_runs_to_step_cap PROPERTIES LABELS regression)
+# An output interval of 1e-9 asked for 2e8 dumps (each clips the step): refused, as in the tube runs.
+add_test(NAME error_output_interval_tiny COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err_interval
+         "sod2d.yaml: key 'output.interval': 1e-09 makes 2e\\+08 dumps to the end time 0.2: at most 100000"
+         -- ${UNILAG} run ${INPUTS}/sod2d.yaml --set output.interval=1e-9)
+add_test(NAME tube_error_output_interval_tiny COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/tube_err_interval
+         "tube_flutter.yaml: key 'dynamics.output_interval': 1e-09 makes 3e\\+10 dumps"
+         -- ${UNILAG} run ${INPUTS}/tube_flutter.yaml --set dynamics.output_interval=1e-9)
+set_tests_properties(error_output_interval_tiny tube_error_output_interval_tiny PROPERTIES LABELS regression)
 # The study and plot scripts in apps/ gave Python tracebacks on a bad argument or a missing input folder.
 add_test(NAME apps_script_errors COMMAND bash ${SCRIPTS}/script_errors.sh ${PYTHON} ${PROJECT_SOURCE_DIR}/apps)
 set_tests_properties(apps_script_errors PROPERTIES LABELS regression PASS_REGULAR_EXPRESSION "script_errors: PASS")
