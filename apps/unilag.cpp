@@ -97,7 +97,8 @@ Args parse(int argc, char** argv)
         {
             (s == "--output" ? a.output : a.restart) = value(s.c_str());
             if (a.error.empty() && argv[i][0] == '\0')
-                a.error = s + " needs a folder, found an empty string";
+                a.error = s + (s == "--output" ? " needs a folder" : " needs a checkpoint file") +
+                          ", found an empty string";
         }
         else if (s == "--check")
             a.check = true;
