@@ -326,12 +326,20 @@ void nodeSums(const MeshView<D>& mesh, const Q& quantities, const CellGeometry& 
                     e[a] = centroid(j, a) - xr[a];
                 for (int q = 0; q < NQ; ++q)
                     wj[q] = wj0[q];
+                // The reflection through the span of the image's planes: reflections across planes that are not
+                // orthogonal (deformed free sides, an arc meeting a plane) do not commute, and the order in which
+                // the planes are found follows the cell numbering, which a rotated mesh changes.
+                Vec<D> chosen[D], basis[D];
+                int nChosen = 0;
                 for (int p = 0; p < nPlanes; ++p)
                     if (image & (1 << p))
-                    {
-                        e = e - (2.0 * dot(e, plane[p])) * plane[p];
-                        quantities.mirror(plane[p], wj);
-                    }
+                        chosen[nChosen++] = plane[p];
+                const int nBasis = orthonormalBasis<D>(chosen, nChosen, basis);
+                for (int b = 0; b < nBasis; ++b)
+                {
+                    e = e - (2.0 * dot(e, basis[b])) * basis[b];
+                    quantities.mirror(basis[b], wj);
+                }
                 addNodeTerm<D, NQ, PerVertex>(e, wj, ref, fitted, s);
             }
         }
