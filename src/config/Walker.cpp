@@ -138,6 +138,11 @@ void applyOverride(Teuchos::ParameterList& root, const std::string& file, const 
         start = dot + 1;
     }
     const std::string key = path.substr(start);
+    if (value.size() >= 2 && (value.front() == '"' || value.front() == '\'') && value.back() == value.front())
+    {
+        list->set(key, value.substr(1, value.size() - 2)); // a quoted scalar is a string, as in the file
+        return;
+    }
     double d;
     if (list->isType<std::string>(key) ||
         (!parseNumber(value, d) && value != "true" && value != "false" && (value.empty() || value.front() != '[')))

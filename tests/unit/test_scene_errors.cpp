@@ -290,6 +290,16 @@ TEST(SceneErrors, TrueFalseInAList)
     EXPECT_PRED2(contains, error("velocity: [0.0,\n        No]"), "scene.yaml: line 12: 'No' in a list");
 }
 
+// --set kept a scalar's quotes: 'output.directory=""' made a folder named "" instead of the file's empty string.
+TEST(SceneErrors, QuotedOverrideIsTheStringInside)
+{
+    TempDir dir;
+    const std::string msg = sceneError(dir, sedovScene(), "output.directory", {"output.directory=\"\""});
+    EXPECT_PRED2(contains, msg, "must not be empty");
+    const std::string file = dir.write("scene.yaml", sedovScene());
+    EXPECT_EQ(unilag::readScene(file, {"output.directory='out dir'"}).outputDirectory, "out dir");
+}
+
 TEST(SceneErrors, ListWordsScanSkipsQuotesAndComments)
 {
     using unilag::config::rejectWordsInLists;
