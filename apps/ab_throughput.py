@@ -39,11 +39,7 @@ def sedov(build, threads):
 
 
 def main():
-    args = [x for x in sys.argv[1:] if x != "--no-sedov"]
-    if any(x in ("-h", "--help") for x in args):
-        sys.exit(print(__doc__))
-    if not 3 <= len(args) <= 5 or any(x.startswith("--") for x in args):
-        script_args.fail(f"expected BUILD_A BUILD_B OUT.csv [ROUNDS] [BENCH_FILTER] [--no-sedov], found {sys.argv[1:]}")
+    args = script_args.positional(3, __doc__, 5, flags=("--no-sedov",))
     a, b, out = args[:3]
     rest = args[3:]
     rounds = int(rest[0]) if rest else 5

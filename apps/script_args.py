@@ -9,9 +9,10 @@ def fail(message):
     sys.exit(2)
 
 
-def positional(count, usage, most=None):
-    """sys.argv[1:], checked: at least count arguments, at most `most` (default count), none an unknown option."""
-    args = sys.argv[1:]
+def positional(count, usage, most=None, flags=()):
+    """sys.argv[1:] less the `flags` given, checked: at least count arguments, at most `most` (default count), none
+    an unknown option."""
+    args = [a for a in sys.argv[1:] if a not in flags]
     most = count if most is None else most
     for a in args:
         if a in ("-h", "--help"):

@@ -311,30 +311,24 @@ void nodeSums(const MeshView<D>& mesh, const Q& quantities, const CellGeometry& 
             addNodeTerm<D, NQ, PerVertex>(e, wj, ref, fitted, s);
         }
         // The images of every cell around the node across each plane and their compositions: the cells of the
-        // symmetric flow around it.
-        for (int p = 0; p < nPlanes; ++p)
-            plane[p] = (1.0 / norm(plane[p])) * plane[p];
-        for (LO c = begin; nPlanes > 0 && c < end; ++c)
+        // symmetric flow around it. An image reflects through the span of its planes: reflections across planes
+        // that are not orthogonal (deformed free sides, an arc meeting a plane) do not commute, and the order in
+        // which the planes are found follows the cell numbering, which a rotated mesh changes.
+        for (int image = 1; image < (1 << nPlanes); ++image)
         {
-            const LO j = mesh.nodeCorners(c) / NV;
-            double wj0[NQ];
-            quantities.values(j, wj0);
-            for (int image = 1; image < (1 << nPlanes); ++image)
+            Vec<D> chosen[D], basis[D];
+            int nChosen = 0;
+            for (int p = 0; p < nPlanes; ++p)
+                if (image & (1 << p))
+                    chosen[nChosen++] = plane[p];
+            const int nBasis = orthonormalBasis<D>(chosen, nChosen, basis);
+            for (LO c = begin; c < end; ++c)
             {
+                const LO j = mesh.nodeCorners(c) / NV;
                 Vec<D> e;
                 for (int a = 0; a < D; ++a)
                     e[a] = centroid(j, a) - xr[a];
-                for (int q = 0; q < NQ; ++q)
-                    wj[q] = wj0[q];
-                // The reflection through the span of the image's planes: reflections across planes that are not
-                // orthogonal (deformed free sides, an arc meeting a plane) do not commute, and the order in which
-                // the planes are found follows the cell numbering, which a rotated mesh changes.
-                Vec<D> chosen[D], basis[D];
-                int nChosen = 0;
-                for (int p = 0; p < nPlanes; ++p)
-                    if (image & (1 << p))
-                        chosen[nChosen++] = plane[p];
-                const int nBasis = orthonormalBasis<D>(chosen, nChosen, basis);
+                quantities.values(j, wj);
                 for (int b = 0; b < nBasis; ++b)
                 {
                     e = e - (2.0 * dot(e, basis[b])) * basis[b];

@@ -64,9 +64,9 @@ template <class Functor> struct InOrderScan
     }
 };
 
-//! One thread's work: on Kokkos::Serial whatever `serial` says where the views are host-accessible (an OpenMP launch
-//! of one iteration would fork a team for nothing).
-template <class Functor> void scan(const char* name, int n, bool /*serial*/, const Functor& f)
+//! One thread's work: on Kokkos::Serial where the views are host-accessible (an OpenMP launch of one iteration would
+//! fork a team for nothing).
+template <class Functor> void scan(const char* name, int n, const Functor& f)
 {
     forEach(name, 1, true, InOrderScan<Functor>{f, n});
 }

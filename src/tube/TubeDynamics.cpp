@@ -67,7 +67,7 @@ void TubeDynamics::kick(double tau)
     const double U = s.setup.flowSpeed, M = s.c.fluidMass;
     forEach("tube fluid segments", s.n, s.serial,
             FluidSegment{s.r, s.v, s.force, s.tangent, s.mass, s.pressureStep, M, U, s.leftFlags, s.rightFlags, s.n});
-    scan("tube pressure", s.n, s.serial, PressureScan{s.pressureStep, s.pressure, s.n});
+    scan("tube pressure", s.n, PressureScan{s.pressureStep, s.pressure, s.n});
     CoriolisKick sweep{s.force, s.torque, s.tangent, s.v, s.vB, s.vA, s.spin, s.mass, s.pressure, M * U * U, M * U,
                        s.leftFlags, s.rightFlags, s.n, tau, true, false};
     forEach("tube coriolis predictor", s.n + 1, s.serial, sweep); // v -> vA
