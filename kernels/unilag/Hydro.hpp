@@ -345,25 +345,7 @@ void nodalSolve(const MeshView<D>& mesh, const BoundaryView& bc, const ConstFiel
                 {
                     // outward area vector of face j is -D c_j
                     const Vec<D> n = wallNormal<D>(bc, g, (-double(D)) * cornerVec<D>(corner, i, j));
-                    const double len = norm(n);
-                    int best = -1;
-                    double bestCos = 0.7;
-                    for (int s = 0; s < nSlip; ++s)
-                    {
-                        const double cosine = dot(n, slipNormal[s]) / (len * norm(slipNormal[s]));
-                        if (cosine > bestCos)
-                        {
-                            bestCos = cosine;
-                            best = s;
-                        }
-                    }
-                    if (best < 0 && nSlip < MaxSlip)
-                    {
-                        best = nSlip++;
-                        slipNormal[best] = Vec<D>::zero();
-                    }
-                    if (best >= 0)
-                        slipNormal[best] = slipNormal[best] + n;
+                    addWallNormal<D>(n, slipNormal, nSlip);
                 }
             }
         }

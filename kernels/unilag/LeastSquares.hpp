@@ -24,7 +24,7 @@
 namespace unilag
 {
 
-//! Unit normal of face f (opposite local vertex f) of cell i on the configuration x, and one of its vertices.
+//! Outward unit normal of face f (opposite local vertex f) of cell i on the configuration x, and one of its vertices.
 template <int D>
 KOKKOS_INLINE_FUNCTION Vec<D> faceUnitNormal(const MeshView<D>& mesh, const ConstField& x, LO i, int f, LO& vertex)
 {
@@ -52,7 +52,10 @@ KOKKOS_INLINE_FUNCTION Vec<D> faceUnitNormal(const MeshView<D>& mesh, const Cons
         n[1] = a[2] * b[0] - a[0] * b[2];
         n[2] = a[0] * b[1] - a[1] * b[0];
     }
-    return (1.0 / norm(n)) * n;
+    double inward = 0.0; // towards the opposite vertex: the vertex order alone leaves the sign to the face's index
+    for (int a = 0; a < D; ++a)
+        inward += n[a] * (x(mesh.cellNodes(i, f), a) - x(fv[0], a));
+    return (inward > 0.0 ? -1.0 : 1.0) / norm(n) * n;
 }
 
 /*! Limiter of the second-order reconstruction (scene key scheme.limiter). Barth-Jespersen in three bounded forms:
@@ -88,9 +91,9 @@ KOKKOS_INLINE_FUNCTION constexpr Bounds uniformBounds(Limiter limiter)
 }
 
 /*! The mirroring planes (slip walls, symmetry planes: the groups Q mirrors) through node r, gathered from the faces
- *  at r of one cell j around it (local vertex kj of j is r: the faces of j other than face kj contain r). A face whose
- *  normal is within ~45 degrees of a plane already found adds to it (a curved wall's faces at r); up to D planes. The
- *  sums are normalised by the caller. */
+ *  at r of one cell j around it (local vertex kj of j is r: the faces of j other than face kj contain r) by the
+ *  nodal solver's rule (addWallNormal): a curved wall's faces join one plane, walls meeting at a corner or a wedge
+ *  are one each; up to D planes. */
 template <int D, class Q>
 KOKKOS_INLINE_FUNCTION void addMirrorPlanes(const MeshView<D>& mesh, const Q& quantities, const ConstField& x, LO j,
                                             int kj, Vec<D> (&plane)[D], int& nPlanes)
@@ -101,17 +104,7 @@ KOKKOS_INLINE_FUNCTION void addMirrorPlanes(const MeshView<D>& mesh, const Q& qu
         if (g < 0 || !quantities.mirrors(g))
             continue;
         LO vertex;
-        Vec<D> n = faceUnitNormal<D>(mesh, x, j, f, vertex);
-        int p = 0;
-        while (p < nPlanes && Kokkos::Experimental::fabs(dot(n, plane[p])) < 0.7 * norm(plane[p]))
-            ++p;
-        if (p == nPlanes)
-        {
-            if (nPlanes == D)
-                continue;
-            plane[nPlanes++] = Vec<D>::zero();
-        }
-        plane[p] = plane[p] + (dot(n, plane[p]) < 0.0 ? -1.0 : 1.0) * n;
+        addWallNormal<D>(faceUnitNormal<D>(mesh, x, j, f, vertex), plane, nPlanes);
     }
 }
 

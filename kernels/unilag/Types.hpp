@@ -119,6 +119,35 @@ KOKKOS_INLINE_FUNCTION int orthonormalBasis(const Vec<D>* u, int n, Vec<D> (&Q)[
     return nq;
 }
 
+/*! \brief Adds a slip-wall face's outward normal n to the wall planes through a node (sums of their faces' normals):
+ *  to the plane it is closest to if within ~45 degrees of it (cosine above 0.7: a curved or faceted wall), else as a
+ *  new plane while fewer than N are held. Signed: walls meeting at a sharp wedge, whose outward normals point more
+ *  than 135 degrees apart, are two planes (a test on |cosine| merged any wedge under 45.6 degrees into one plane
+ *  through its bisector). One rule for the nodal solver's constraints and the reconstruction's mirror images. */
+template <int D, int N>
+KOKKOS_INLINE_FUNCTION void addWallNormal(const Vec<D>& n, Vec<D> (&plane)[N], int& nPlanes)
+{
+    const double len = norm(n);
+    int best = -1;
+    double bestCos = 0.7;
+    for (int p = 0; p < nPlanes; ++p)
+    {
+        const double cosine = dot(n, plane[p]) / (len * norm(plane[p]));
+        if (cosine > bestCos)
+        {
+            bestCos = cosine;
+            best = p;
+        }
+    }
+    if (best < 0 && nPlanes < N)
+    {
+        best = nPlanes++;
+        plane[best] = Vec<D>::zero();
+    }
+    if (best >= 0)
+        plane[best] = plane[best] + n;
+}
+
 //! Symmetric D x D matrix stored full (D <= 3 keeps this in registers).
 template <int D>
 struct Mat

@@ -444,6 +444,55 @@ TEST(HydroKernels, ReconstructionFitsImposedPressures3D)
     checkImposedPressureFit<3>(cubeMesh(4, 0.2, 44));
 }
 
+/*! Walls meeting at the apex of a wedge with interior angle theta (the unit square sheared so that its sides x = 0
+ *  and y = 0 meet at theta, both slip walls): the mean cell velocity at the apex node keeps no part normal to either
+ *  wall where they are two planes (a 30-degree wedge), and only the part along the mean wall where they are one
+ *  faceted wall (150 degrees: normals 30 degrees apart). With a test on |cosine| the 30-degree wedge was one plane
+ *  through its bisector, and the apex kept a velocity along it. */
+void checkWedgeApex(double thetaDegrees, bool twoPlanes)
+{
+    const double theta = thetaDegrees * M_PI / 180.0, gamma = 1.4;
+    HostMesh<2> h = squareMesh(6, 0.1, 45);
+    for (LO r = 0; r < h.nNodes(); ++r)
+    {
+        const double x = h.x[2 * r], y = h.x[2 * r + 1];
+        h.x[2 * r] = x + std::cos(theta) * y;
+        h.x[2 * r + 1] = std::sin(theta) * y;
+    }
+    ASSERT_NO_FATAL_FAILURE(connect<2>(h, wallGroup)); // groups 0 .. 3: x = 0, x = 1, y = 0, y = 1
+    std::vector<std::pair<int, std::array<double, 3>>> bcs(4, {unilag::BcFree, {0.0, 0.0, 0.0}});
+    bcs[0].first = bcs[2].first = BcSlipWall;
+    Hydro<2> hydro(h, gamma, bcs);
+    const double v0[2] = {1.0, 0.5};
+    ASSERT_NO_FATAL_FAILURE(hydro.initialize(
+        [&](const double*, double& rho, double& p, double* v)
+        {
+            rho = p = 1.0;
+            v[0] = v0[0];
+            v[1] = v0[1];
+        },
+        gamma));
+    Field vnode("vnode", hydro.nNodes, 2);
+    unilag::meanCellVelocityAtNodes<2>(hydro.mesh, hydro.state, hydro.x, vnode, hydro.bc);
+    auto vh = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), vnode);
+    ASSERT_EQ(h.x[0], 0.0); // node 0 is the apex
+    ASSERT_EQ(h.x[1], 0.0);
+    double expect[2] = {0.0, 0.0};
+    if (!twoPlanes) // one plane, normal to the sum of the two walls' outward unit normals
+    {
+        const double n[2] = {-std::sin(theta), std::cos(theta) - 1.0}; // (0, -1) + (-sin, cos)
+        const double len = std::hypot(n[0], n[1]), vn = (v0[0] * n[0] + v0[1] * n[1]) / (len * len);
+        expect[0] = v0[0] - vn * n[0];
+        expect[1] = v0[1] - vn * n[1];
+        ASSERT_GT(std::hypot(expect[0], expect[1]), 0.1);
+    }
+    EXPECT_NEAR(vh(0, 0), expect[0], 1e-14);
+    EXPECT_NEAR(vh(0, 1), expect[1], 1e-14);
+}
+
+TEST(HydroKernels, WedgeApexHasTwoWallPlanes) { checkWedgeApex(30.0, true); }
+TEST(HydroKernels, WideCornerIsOneFacetedWall) { checkWedgeApex(150.0, false); }
+
 /* The signal speed a = sqrt(c0^2 + 4/3 c_sh^2 + c_h^2) and the impedance rho a that computeEos forms
  * (docs/gpr-model.md 1.5), for each combination of shear and heat conduction: the shear term only with shear, the
  * heat term only with conduction, and c_h^2 = alpha^2 theta / (cv rho^2) at the local density (rho = 2 rho0 here). */
