@@ -277,7 +277,7 @@ template <int D, class P> class GprSystem : public TimeSystem
             out.table((node ? "node." : "cell.") + name, node ? dm.nGlobalNodes : dm.nGlobalCells,
                       ownedRows(md_, name, node));
         const double loopNumbers[] = {loop.t,     loop.dtPrev, loop.nextOutput, double(loop.steps), double(loop.dumps),
-                                      double(loop.retries), loop.nextCheckpoint};
+                                      double(loop.retries), loop.nextCheckpoint, loop.largestStable};
         out.numbers("loop", std::vector<double>(std::begin(loopNumbers), std::end(loopNumbers)));
         out.numbers("initial_totals", loop.initialTotals);
         out.numbers("initial_quality", {initialQuality_});
@@ -315,7 +315,7 @@ template <int D, class P> class GprSystem : public TimeSystem
         op_.computeAux(lagged());
         const std::vector<double>& l = in.numbers("loop");
         const std::vector<double>& run = in.numbers("run");
-        if (l.size() != 7 || run.size() != 10 + D)
+        if ((l.size() != 7 && l.size() != 8) || run.size() != 10 + D) // 7: before largestStable was kept
             throw InputError("--restart '" + path + "': the loop's state has the wrong length");
         LoopState s;
         s.t = l[0];
@@ -325,6 +325,7 @@ template <int D, class P> class GprSystem : public TimeSystem
         s.dumps = int(l[4]);
         s.retries = int(l[5]);
         s.nextCheckpoint = l[6];
+        s.largestStable = l.size() > 7 ? l[7] : 0.0; // the collapse floor's scale, as the run had it
         s.initialTotals = in.numbers("initial_totals");
         initialQuality_ = in.numbers("initial_quality").at(0);
         if (s.initialTotals.size() != std::size_t(TotalsLayout<D>::size))

@@ -112,7 +112,7 @@ struct LoopState
     int dumps = 0;   //!< dumps written so far (the next dump's index)
     int retries = 0; //!< halvings of rejected steps so far
     double nextCheckpoint = -1.0;       //!< the next checkpoint time (< 0: the first one after t = 0)
-    double largestStable = 0.0; //!< the largest stable step of this run so far (not checkpointed: a scale only)
+    double largestStable = 0.0;         //!< the largest stable step of this run so far (the collapse floor's scale)
     std::vector<double> initialTotals; //!< TimeSystem::totals() at t = 0 (empty: not taken yet)
 };
 
