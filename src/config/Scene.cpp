@@ -455,6 +455,7 @@ void readExact(ConfigNode& root, Scene& s)
     }
     s.radiusTolerance = x.nonNegative("radius_tolerance", 0.0);
     s.maxL1Density = x.nonNegative("max_l1_density", 0.0);
+    s.maxDensity = x.nonNegative("max_density", 0.0);
     s.shockRadiusTolerance = x.nonNegative("shock_radius_tolerance", 0.0);
     if (x.has("max_l2"))
     {

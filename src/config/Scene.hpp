@@ -197,6 +197,7 @@ struct Scene
     double riemannPosition = 0.0;
     double riemannGamma = 1.4; //!< Riemann: the ideal gas' gamma (every material's)
     double maxL1Density = 0.0;         //!< --check bound, 0 = none
+    double maxDensity = 0.0;           //!< --check bound on the largest cell density over the run, 0 = none
     double shockRadiusTolerance = 0.0; //!< --check bound (relative), 0 = none
     std::map<std::string, double> boundaryRadius; //!< exact mean distance from the origin of a boundary group
     double radiusTolerance = 0.0;                 //!< --check bound on it (relative), 0 = none

@@ -53,6 +53,7 @@ class CheckpointReader
     CheckpointReader(MPI_Comm comm, const std::string& path);
     std::string text(const std::string& name) const;
     const std::vector<double>& numbers(const std::string& name) const;
+    bool hasNumbers(const std::string& name) const { return vectors_.count(name) > 0; }
     /*! The rows of the given global ids (ncomp columns, checked), row-major, fetched from their blocks' owners.
      *  Collective (every rank asks for the same tables in the same order); InputError if absent. */
     std::vector<double> rows(const std::string& name, const std::vector<long long>& gid, int ncomp) const;

@@ -176,6 +176,11 @@ int selfCheck(const GprModel<D, P>& md, const GprSystem<D, P>& sys, const Conser
     const Scene& scene = md.scene;
     if (scene.maxL1Density > 0.0)
         bound("L1(density) error", x.l1, scene.maxL1Density);
+    const DensityPeak peak = sys.largestDensity(); // collective: every rank
+    if (scene.maxDensity > 0.0)
+        bound("largest cell density over the run (cell " + std::to_string(peak.cell) + ", t = " +
+                  jsonNumber(peak.t) + ")",
+              peak.value, scene.maxDensity);
     const char* l2Names[3] = {"L2 error of the specific volume", "L2 error of the velocity",
                               "L2 error of the total energy"};
     const double l2[3] = {x.stationary.specificVolume, x.stationary.velocity, x.stationary.energy};
@@ -258,6 +263,14 @@ void writeSummary(const GprModel<D, P>& md, const GprSystem<D, P>& sys, const Ru
     s.number("boundary_work", b.work).number("wall_work", b.passiveWork).number("boundary_heat", b.heat);
     s.number("max_node_force_imbalance", b.maxImbalance).number("volume_identity_defect", volumeIdentityDefect(md));
     const double finalQuality = minShapeQuality(md);
+    const DensityPeak peak = sys.largestDensity();
+    std::string at = "[" + jsonNumber(peak.centroid[0]);
+    for (int d = 1; d < D; ++d)
+        at += ", " + jsonNumber(peak.centroid[d]);
+    s.object("largest_density", {{"value", jsonNumber(peak.value)},
+                                 {"t", jsonNumber(peak.t)},
+                                 {"cell", std::to_string(peak.cell)},
+                                 {"centroid", at + "]"}});
     s.object("min_shape_quality", {{"initial", jsonNumber(initialQuality)}, {"final", jsonNumber(finalQuality)}});
     if (x.l1 >= 0.0)
         s.number("l1_density_error", x.l1);

@@ -15,6 +15,7 @@
 #include "solver/GprCheckpoint.hpp"
 #include "solver/GprDiagnostics.hpp"
 #include "solver/GprOutput.hpp"
+#include "solver/GprPeak.hpp"
 #include "solver/Integrators.hpp"
 #include "solver/TimeLoop.hpp"
 
@@ -47,6 +48,7 @@ template <int D, class P> class GprSystem : public TimeSystem
         op_.refreshGeometry();
         op_.initialNodeVelocities();
         op_.computeAux();
+        notePeakDensity(md_, 0.0, peak_);
     }
 
     double prepareStep(double t, long step) override
@@ -123,6 +125,7 @@ template <int D, class P> class GprSystem : public TimeSystem
         // 3D Sedov deposit (R0 = 1300 R1), and the final row, weighing R0 by beta - 1, left a negative energy.
         op_.advance(lagged());
         op_.filterEntropy(dt);
+        notePeakDensity(md_, t + dt, peak_);
     }
 
     /*! New owners by the scene's partitioner (balancedOwners: Zoltan2 on the cells' current centroids, or the
@@ -281,6 +284,7 @@ template <int D, class P> class GprSystem : public TimeSystem
         out.numbers("loop", std::vector<double>(std::begin(loopNumbers), std::end(loopNumbers)));
         out.numbers("initial_totals", loop.initialTotals);
         out.numbers("initial_quality", {initialQuality_});
+        out.numbers("largest_density", combinedPeak(md_.comm, peak_).numbers());
         std::vector<double> run = {double(picardTotal_), double(picardMax_), maxGcl_, double(fallbackCells_),
                                    balance_.work,        balance_.passiveWork, balance_.heat, balance_.maxImbalance,
                                    double(balance_.worstNode), balance_.worstTime};
@@ -328,6 +332,8 @@ template <int D, class P> class GprSystem : public TimeSystem
         s.largestStable = l.size() > 7 ? l[7] : 0.0; // the collapse floor's scale, as the run had it
         s.initialTotals = in.numbers("initial_totals");
         initialQuality_ = in.numbers("initial_quality").at(0);
+        if (in.hasNumbers("largest_density")) // every rank takes the run's record (absent: written before it was kept)
+            peak_ = DensityPeak::from(in.numbers("largest_density"));
         if (s.initialTotals.size() != std::size_t(TotalsLayout<D>::size))
             throw InputError("--restart '" + path + "': the initial totals have the wrong length");
         picardTotal_ = long(run[0]);
@@ -356,6 +362,8 @@ template <int D, class P> class GprSystem : public TimeSystem
     int picardMax() const { return picardMax_; }
     //! The smallest cell shape quality at t = 0: set by a new run, read from the checkpoint by a restart.
     double initialQuality() const { return initialQuality_; }
+    //! The run's largest cell density, where and when (GprPeak.hpp). Collective.
+    DensityPeak largestDensity() const { return combinedPeak(md_.comm, peak_); }
     void setInitialQuality(double q) { initialQuality_ = q; }
     double maxGclDefect() const { return maxGcl_; }
     //! Boundary impulse and work, wall work, boundary heat and the worst node imbalance of the accepted steps.
@@ -420,6 +428,7 @@ template <int D, class P> class GprSystem : public TimeSystem
     int picardMax_ = 0;
     double maxGcl_ = 0.0;
     double initialQuality_ = 0.0; //!< the mesh's smallest shape quality at t = 0 (kept through a restart)
+    DensityPeak peak_;            //!< this rank's largest cell density so far (the run's, after a restart)
     BoundaryBalance<D> balance_;
 };
 

@@ -102,6 +102,13 @@ add_test(NAME heat_rotation3d_o2 COMMAND ${PYTHON} ${SCRIPTS}/heat_rotation3d.py
 set_tests_properties(heat_rotation3d_o2 PROPERTIES LABELS "gpr;regression"
                      PASS_REGULAR_EXPRESSION "heat_rotation3d: PASS")
 
+# The run's largest cell density (summary.json largest_density; tests/scripts/largest_density.py): 2D Sedov on 1k
+# triangles at a fixed step with a dump after every step; the record is the dumps' largest density (value, time, cell,
+# centroid; 4.27 at t = 0.1064 of 0.12), and --check with exact.max_density 0.1% below it fails, 0.1% above passes. 5 s.
+add_test(NAME largest_density COMMAND ${PYTHON} ${SCRIPTS}/largest_density.py ${UNILAG} ${INPUTS}/sedov2d.yaml
+         ${WORK}/largest_density)
+set_tests_properties(largest_density PROPERTIES LABELS "gpr;regression" PASS_REGULAR_EXPRESSION "largest_density: PASS")
+
 # GPR hydrodynamic limit (tests/scripts/hydro_limit.py): the full model with tau1 = 1e-14 and c_sh = 0.1 (of the
 # order of the shocked gas' sound speed; inputs/sedov2d_gpr.yaml) against the Euler solver, 2D Sedov on 1k triangles,
 # both at the same fixed step dt = 4e-4 (initial_dt with max_growth = 1: below every stable step of both runs; the

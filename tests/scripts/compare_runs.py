@@ -9,7 +9,8 @@ Every dataset of the last dump (unilag_NNNNNN.h5) is compared, not a fixed list:
 (same NNNNNN) with the same set of datasets. Cell datasets are matched by global_id; the node coordinates (and any
 node dataset) through each cell's corners (connectivity), since node and cell numbering depend on the partition;
 `rank` must be present but its values are not compared (they are the partition). summary.json must agree too:
-'status' and 'steps' exactly, 't_final' (and the dump's XDMF time, where there is one) within RTOL.
+'status' and 'steps' exactly, 't_final' (and the dump's XDMF time, where there is one) within RTOL, and where it has
+one its 'largest_density' (value and time within RTOL, the cell's id where they are equal).
 RTOL = 0 asks for bitwise-identical results. `--` starts another group, compared within itself (one process for
 several comparisons).
 """
@@ -100,6 +101,14 @@ def compare(dirs):
             if s[k] != ref_sum[k]:
                 fail(f"summary.json '{k}': {s[k]} in {d} vs {ref_sum[k]} in {ref_dir}")
         diff = rel(s["t_final"], ref_sum["t_final"], ref_sum["t_final"])
+        if "largest_density" in ref_sum:  # the run's largest cell density, when and where: the same on any partition
+            a, b = ref_sum["largest_density"], s.get("largest_density")
+            if b is None:
+                fail(f"summary.json has no 'largest_density' in {d}")
+            peak = max(rel(b["value"], a["value"], a["value"]), rel(b["t"], a["t"], a["t"]))
+            if peak == 0.0 and b["cell"] != a["cell"]:
+                fail(f"summary.json 'largest_density': cell {b['cell']} in {d} vs {a['cell']} in {ref_dir}")
+            diff = max(diff, peak)
         if ref_t is not None and t is not None:
             diff = max(diff, rel(t, ref_t, ref_t))
         worst = max(worst, diff)
