@@ -79,4 +79,31 @@ void rejectWordsInLists(const std::string& file, const std::string& text)
     }
 }
 
+void rejectOtherTopLevelKeys(const std::string& file, const std::string& text, const std::string& top)
+{
+    if (text.rfind("\xEF\xBB\xBF", 0) == 0) // the reader's "Unexpected character code -17" names no cause
+        throw InputError(file + ": starts with a UTF-8 byte-order mark: save it without one");
+    std::size_t begin = 0;
+    for (int line = 1; begin < text.size(); ++line)
+    {
+        std::size_t end = text.find('\n', begin);
+        end = end == std::string::npos ? text.size() : end;
+        const std::string l = text.substr(begin, end - begin);
+        begin = end + 1;
+        // a key at column 0: not indented, a comment, a list item, a directive, a document marker or a flow map
+        if (l.empty() || std::string(" \t\r#-%.{}[]").find(l[0]) != std::string::npos)
+            continue;
+        const std::size_t colon = l.find(':');
+        if (colon == std::string::npos)
+            continue; // not a key: the YAML reader says what it is
+        std::string key = l.substr(0, colon);
+        key.erase(key.find_last_not_of(" \t") + 1);
+        if (key.size() >= 2 && (key[0] == '"' || key[0] == '\'') && key.back() == key[0])
+            key = key.substr(1, key.size() - 2);
+        if (key != top)
+            throw InputError(file + ": line " + std::to_string(line) + ": unknown top-level key '" + key +
+                             "': a scene holds one section, '" + top + ":'");
+    }
+}
+
 } // namespace unilag::config

@@ -166,15 +166,12 @@ void readMeshSection(ConfigNode& root, Scene& s)
     if (!s.geometry.empty())
     {
         s.meshSize = mesh.positive("size", 0.0, true);
-        if (!fs::exists(s.geometry))
-            mesh.fail("geometry", "file not found: " + s.geometry);
-        else if (!fs::is_regular_file(s.geometry)) // a folder, or a FIFO that would block the reader for ever
-            mesh.fail("geometry", "not a regular file: " + s.geometry);
+        const std::string problem = config::inputFileProblem(s.geometry);
+        if (!problem.empty())
+            mesh.fail("geometry", problem + ": " + s.geometry);
     }
-    else if (!fs::exists(s.meshFile))
-        mesh.fail("file", "file not found: " + s.meshFile);
-    else if (!fs::is_regular_file(s.meshFile))
-        mesh.fail("file", "not a regular file: " + s.meshFile);
+    else if (const std::string problem = config::inputFileProblem(s.meshFile); !problem.empty())
+        mesh.fail("file", problem + ": " + s.meshFile);
     mesh.rejectUnknown();
 }
 
@@ -355,6 +352,11 @@ void readOutput(ConfigNode& root, Scene& s)
     s.outputSource = s.file + ": key 'output.directory'";
     s.outputInterval = o.nonNegative("interval", 0.0);
     s.checkpointInterval = o.nonNegative("checkpoint_interval", 0.0);
+    // each checkpoint clips a step as a dump does: 1e-17 made the run loop at t = 0
+    if (s.checkpointInterval > 0.0 && s.endTime / s.checkpointInterval > 1e5)
+        o.fail("checkpoint_interval", num(s.checkpointInterval) + " makes " +
+                                          num(std::floor(s.endTime / s.checkpointInterval)) + " checkpoints to the end " +
+                                          "time " + num(s.endTime) + ": at most 100000 (0: none)");
     s.writeOutput = o.boolean("enabled", true);
     if (s.writeOutput)
         refuseTooManyDumps(o, "interval", s.outputInterval, s.endTime);
@@ -422,10 +424,8 @@ void readExact(ConfigNode& root, Scene& s)
         readRiemann(x, s);
     const bool sedov = s.exactSolution == ExactSolution::Sedov;
     s.exactTable = resolvePath(s.directory, x.text("table", "", sedov));
-    if (sedov && !fs::exists(s.exactTable))
-        x.fail("table", "file not found: " + s.exactTable);
-    else if (sedov && !fs::is_regular_file(s.exactTable))
-        x.fail("table", "not a regular file: " + s.exactTable);
+    if (const std::string problem = sedov ? config::inputFileProblem(s.exactTable) : ""; !problem.empty())
+        x.fail("table", problem + ": " + s.exactTable);
     double tableEnd = 0.0;
     if (sedov)
     {

@@ -182,16 +182,30 @@ std::string resolvePath(const std::string& dir, const std::string& p)
     return (path.is_absolute() ? path : fs::path(dir) / path).lexically_normal().string();
 }
 
+std::string inputFileProblem(const std::string& path)
+{
+    std::error_code ec; // the throwing overloads stopped a 300-character name with an internal error
+    const fs::file_status st = fs::status(path, ec);
+    if (st.type() == fs::file_type::not_found)
+        return "file not found";
+    if (ec)
+        return ec.message();
+    return fs::is_regular_file(st) ? "" : "not a regular file";
+}
+
 Teuchos::RCP<Teuchos::ParameterList> readYaml(const std::string& file, const std::string& top,
                                               const std::vector<std::string>& overrides)
 {
-    if (!fs::exists(file))
+    const std::string problem = inputFileProblem(file);
+    if (problem == "file not found")
         throw InputError(file + ": scene file not found");
-    if (!fs::is_regular_file(file)) // a folder, or a FIFO that would block the reader for ever
-        throw InputError(file + ": not a regular file");
+    if (!problem.empty())
+        throw InputError(file + ": " + problem);
     {
         std::ifstream in(file);
-        rejectWordsInLists(file, std::string(std::istreambuf_iterator<char>(in), {}));
+        const std::string text(std::istreambuf_iterator<char>(in), {});
+        rejectWordsInLists(file, text);
+        rejectOtherTopLevelKeys(file, text, top);
     }
     Teuchos::RCP<Teuchos::ParameterList> list;
     try

@@ -94,6 +94,10 @@ void refuseTooManyDumps(const ConfigNode& node, const std::string& key, double i
 //! p resolved against the scene's folder dir (absolute paths stay as they are).
 std::string resolvePath(const std::string& dir, const std::string& p);
 
+/*! Why the input file `path` cannot be read ("file not found", "not a regular file": a folder, or a FIFO that would
+ *  block the reader for ever; or the system's reason, e.g. a name too long), or "" if it is a regular file. */
+std::string inputFileProblem(const std::string& path);
+
 /*! \brief Parse a YAML scene file whose top-level key must be `top`, then apply `--set` overrides
  *  ("a.b.c=value"; the value's type follows the entry it replaces, else is inferred). Throws InputError. */
 Teuchos::RCP<Teuchos::ParameterList> readYaml(const std::string& file, const std::string& top,

@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <stdexcept>
+#include <string>
 
 #include <muParser.h>
 
@@ -24,7 +25,17 @@ Expression::Expression(const std::string& text) : impl_(std::make_unique<Impl>()
         impl_->parser.DefineVar("r", &impl_->r);
         impl_->parser.DefineVar("t", &impl_->t);
         impl_->parser.SetExpr(text);
-        impl_->parser.Eval(); // compile now, so a syntax error surfaces while reading the scene
+        int values = 0;
+        impl_->parser.Eval(values); // compile now, so a syntax error surfaces while reading the scene
+        // muParser takes "1,5" as two results and "x = 3" as an assignment, and returns the last value: a decimal
+        // comma ran as 5
+        if (values != 1)
+            throw std::invalid_argument("'" + text + "' holds " + std::to_string(values) +
+                                        " comma-separated values where one belongs (a decimal point, not a comma)");
+        for (std::size_t i = 0; i < text.size(); ++i)
+            if (text[i] == '=' && (i == 0 || std::string("=!<>").find(text[i - 1]) == std::string::npos) &&
+                (i + 1 == text.size() || text[i + 1] != '='))
+                throw std::invalid_argument("'" + text + "' assigns ('=') where a value belongs ('==' compares)");
     }
     catch (const mu::Parser::exception_type& e)
     {

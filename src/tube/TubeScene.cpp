@@ -130,7 +130,14 @@ void readStability(ConfigNode& root, TubeScene& s)
     study.speedStep = st.positive("speed_step", study.speedStep);
     if (study.speedStep >= study.speedMax)
         st.fail("speed_step", "must be less than speed_max (" + num(study.speedMax) + ")");
+    // 1e-320 scanned nothing and reported no instability; a bisection to 1e-320 never ended
+    if (study.speedMax / study.speedStep > 1e7)
+        st.fail("speed_step", num(study.speedStep) + " makes " + num(std::floor(study.speedMax / study.speedStep)) +
+                                  " scan points to speed_max " + num(study.speedMax) + ": at most 1e7");
     study.tolerance = st.positive("tolerance", study.tolerance);
+    if (!(study.tolerance >= 1e-12 * study.speedMax && study.tolerance < study.speedStep))
+        st.fail("tolerance", "must be in [1e-12 speed_max, speed_step) = [" + num(1e-12 * study.speedMax) + ", " +
+                                 num(study.speedStep) + "), found " + num(study.tolerance));
     study.locusModes = int(st.integer("locus_modes", study.locusModes, 1, 50));
     study.locusPoints = int(st.integer("locus_points", study.locusPoints, 2, 100000));
     study.locusSpeedFactor = st.positive("locus_speed_factor", study.locusSpeedFactor);
