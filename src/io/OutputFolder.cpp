@@ -23,6 +23,11 @@ std::string outputFolderProblem(const std::string& dir)
     fs::path p = fs::absolute(dir, ec);
     if (ec)
         return ec.message();
+    for (const fs::path& part : p) // exists() below takes a name too long for "absent", and the folder for creatable
+        if (part.string().size() > 255)
+            return "a name in the path is longer than 255 characters";
+    if (p.string().size() >= 4096)
+        return "the path is 4096 characters or longer";
     // The deepest existing ancestor (or the folder itself): it must be a folder we can create entries in.
     fs::path existing = p;
     while (!fs::exists(existing, ec) && existing.has_relative_path())

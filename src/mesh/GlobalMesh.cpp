@@ -10,6 +10,7 @@
 #include <gmsh.h>
 
 #include "config/Scene.hpp"
+#include "core/Format.hpp"
 #include "mesh/FaceKey.hpp"
 #include "mesh/GmshCrashGuard.hpp"
 #include "mesh/MshCheck.hpp"
@@ -299,12 +300,28 @@ void renumber(GlobalMesh& m)
  *  transfinite volumes. */
 constexpr double tetOptimizeThreshold = 0.6;
 
+/*! About how many cells mesh.size asks for: the model's bounding box over a regular simplex of that edge (an upper
+ *  estimate). mesh.size = 1e-9 meshed for ever without a word. */
+double estimatedCells(double size)
+{
+    const int dim = gmsh::model::getDimension();
+    double lo[3], hi[3];
+    gmsh::model::getBoundingBox(-1, -1, lo[0], lo[1], lo[2], hi[0], hi[1], hi[2]);
+    double measure = 1.0;
+    for (int d = 0; d < dim; ++d)
+        measure *= std::max(hi[d] - lo[d], 0.0);
+    const double simplex = dim == 2 ? std::sqrt(3.0) / 4.0 : 1.0 / (6.0 * std::sqrt(2.0));
+    return measure / (simplex * std::pow(size, dim));
+}
+constexpr double maxEstimatedCells = 1e9;
+
 GlobalMesh loadMesh(const Scene& scene)
 {
     const std::string source = scene.geometry.empty() ? scene.meshFile : scene.geometry;
     if (scene.geometry.empty())
         checkMshFile(source); // before gmsh, which crashes on some malformed files
     GlobalMesh m;
+    double cells = 0.0; // estimated from mesh.size (a .geo only)
     gmsh::initialize(0, nullptr, false);
     try
     {
@@ -330,13 +347,18 @@ GlobalMesh loadMesh(const Scene& scene)
                 gmsh::option::setNumber("Mesh.MeshSizeExtendFromBoundary", 0);
                 gmsh::option::setNumber("Mesh.MeshSizeMin", scene.meshSize);
                 gmsh::option::setNumber("Mesh.MeshSizeMax", scene.meshSize);
-                gmsh::model::mesh::generate(gmsh::model::getDimension());
+                cells = estimatedCells(scene.meshSize);
+                if (cells <= maxEstimatedCells)
+                    gmsh::model::mesh::generate(gmsh::model::getDimension());
             }
         }
         catch (...)
         {
             throw InputError(source + ": " + gmshError());
         }
+        if (!(cells <= maxEstimatedCells))
+            throw InputError(scene.file + ": key 'mesh.size': " + jsonNumber(scene.meshSize) + " asks for about " +
+                             jsonNumber(cells) + " cells of " + source + ": at most 1e9");
         extract(source, m);
         renumber(m);
     }

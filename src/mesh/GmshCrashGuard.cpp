@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <csignal>
+#include <cstdlib>
 #include <cstring>
 #include <exception>
 
@@ -37,6 +38,19 @@ void reportGmshTermination()
     reportGmshCrash(SIGABRT);
 }
 
+// gmsh's Exit command (and its own fatal errors) end the process through exit(0): unilag returned 0 with no output.
+bool guardActive = false;
+char exitMessage[1024];
+std::size_t exitMessageLength = 0;
+
+extern "C" void reportGmshExit()
+{
+    if (!guardActive)
+        return;
+    [[maybe_unused]] const ssize_t written = ::write(STDERR_FILENO, exitMessage, exitMessageLength);
+    ::_exit(ExitInput);
+}
+
 } // namespace
 
 GmshCrashGuard::GmshCrashGuard(const std::string& source)
@@ -52,10 +66,17 @@ GmshCrashGuard::GmshCrashGuard(const std::string& source)
     for (std::size_t s = 0; s < guardedSignals.size(); ++s)
         sigaction(guardedSignals[s], &action, &previous[s]);
     previousTerminate = std::set_terminate(reportGmshTermination);
+    const std::string ended = "unilag: error: " + printable(source, 400) +
+                              ": gmsh ended the process while reading or meshing it (an Exit command in the .geo?)\n";
+    exitMessageLength = std::min(ended.size(), sizeof(exitMessage));
+    std::memcpy(exitMessage, ended.data(), exitMessageLength);
+    static const bool registered = std::atexit(reportGmshExit) == 0;
+    guardActive = registered;
 }
 
 GmshCrashGuard::~GmshCrashGuard()
 {
+    guardActive = false;
     std::set_terminate(previousTerminate);
     for (std::size_t s = 0; s < guardedSignals.size(); ++s)
         sigaction(guardedSignals[s], &previous[s], nullptr);

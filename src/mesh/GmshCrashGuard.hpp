@@ -3,7 +3,8 @@
  *  a segmentation fault with a .geo that sets Mesh.Algorithm = 8 (Frontal-Delaunay for quads) in 2D, an exception
  *  thrown from its own threads (std::terminate) with Mesh.RandomFactor = 0.5 in 3D; neither reaches the caller as an
  *  exception. While a guard lives, a fatal signal or std::terminate prints one line naming the file and exits with
- *  ExitInput, before any output exists (meshing precedes it).
+ *  ExitInput, before any output exists (meshing precedes it); so does gmsh ending the process with exit() (a .geo
+ *  with Exit;), which returned 0 without a word.
  */
 #pragma once
 

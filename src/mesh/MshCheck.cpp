@@ -24,6 +24,15 @@ int nodesOfType(long long type)
     return type >= 1 && type <= 19 ? nodes[type] : 0;
 }
 
+//! Whether gmsh's element type is of order 2 (types 8-14, 16-19): gmsh corrupted its heap on a linear mesh with one.
+bool secondOrder(long long type) { return (type >= 8 && type <= 14) || (type >= 16 && type <= 19); }
+
+std::string secondOrderText(long long type)
+{
+    return " has type " + std::to_string(type) + ", a second-order element: unilag takes linear triangles and " +
+           "tetrahedra only (gmsh's Mesh.ElementOrder = 1)";
+}
+
 //! Line-by-line reader of one .msh file whose failures name the file and line.
 class MshLines
 {
@@ -149,9 +158,12 @@ void elements22(MshLines& in, const NodeTags& nodes)
         const Tokens t = in.record(0, "an element 'tag type ntags tags... nodes...'");
         if (t.size() < 3)
             in.fail("an element needs 'tag type ntags' first, found " + std::to_string(t.size()) + " fields");
-        const int nv = nodesOfType(in.integer(t[1], "an element type"));
+        const long long type = in.integer(t[1], "an element type");
+        const int nv = nodesOfType(type);
         if (nv == 0)
             in.fail("element " + t[0] + " has type " + t[1] + ", not a gmsh element type of order 1 or 2");
+        if (secondOrder(type))
+            in.fail("element " + t[0] + secondOrderText(type));
         const long long ntags = in.count(t[2], "element " + t[0] + "'s tag count");
         if (ntags > 100 || t.size() != std::size_t(3 + ntags + nv))
             in.fail("element " + t[0] + " of type " + t[1] + " with " + t[2] + " tags needs " +
@@ -217,9 +229,12 @@ void elements41(MshLines& in, const NodeTags& nodes)
     for (long long b = 0; b < blocks; ++b)
     {
         const Tokens t = in.record(4, "an element block 'dim entity type count'");
-        const int nv = nodesOfType(in.integer(t[2], "an element type"));
+        const long long type = in.integer(t[2], "an element type");
+        const int nv = nodesOfType(type);
         if (nv == 0)
             in.fail("element type " + t[2] + " is not a gmsh element type of order 1 or 2");
+        if (secondOrder(type))
+            in.fail("the element block of entity " + t[1] + secondOrderText(type));
         const long long n = in.count(t[3], "a block's element count");
         for (long long k = 0; k < n; ++k)
             checkElementNodes(in, nodes, in.record(std::size_t(1 + nv), "an element 'tag nodes...'"), 1);

@@ -41,6 +41,39 @@ add_test(NAME tube_error_output_interval_tiny COMMAND bash ${SCRIPTS}/expect_err
          "tube_flutter.yaml: key 'dynamics.output_interval': 1e-09 makes 3e\\+10 dumps"
          -- ${UNILAG} run ${INPUTS}/tube_flutter.yaml --set dynamics.output_interval=1e-9)
 set_tests_properties(error_output_interval_tiny tube_error_output_interval_tiny PROPERTIES LABELS regression)
+# Found by fuzzing the readers (session 34); each ran with exit 0, looped, crashed or corrupted the heap before.
+# A checkpoint every 1e-17 looped at t = 0 and ignored SIGTERM; a decimal comma ran as its last number (1,5 -> 5);
+# a key beside 'unilag:' was dropped; a 300-character path stopped with an internal error; mesh.size 1e-9 meshed for
+# ever; a .geo's Exit command returned 0; one second-order triangle in a linear .msh corrupted gmsh's heap; a tube
+# scan step of 1e-320 reported no instability and a bisection tolerance of 1e-320 never ended.
+set(LONG_NAME "xxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxxx")
+function(fuzz_error name pattern scene)
+    set(extra)
+    if(ARGN)
+        set(extra --set "${ARGN}")
+    endif()
+    add_test(NAME error_fuzz_${name} COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err_fuzz_${name} "${pattern}"
+             -- ${UNILAG} run ${scene} ${extra})
+    set_tests_properties(error_fuzz_${name} PROPERTIES LABELS regression)
+endfunction()
+fuzz_error(checkpoint_tiny "key 'output.checkpoint_interval': 1e-17 makes 2e\\+16 checkpoints" ${INPUTS}/sod2d.yaml
+           output.checkpoint_interval=1e-17)
+fuzz_error(decimal_comma "key 'regions.gas.density': '1,5' holds 2 comma-separated values" ${INPUTS}/sod2d.yaml
+           regions.gas.density=1,5)
+fuzz_error(assignment "key 'regions.gas.pressure': 'x = 3' assigns" ${INPUTS}/sod2d.yaml "regions.gas.pressure=x = 3")
+fuzz_error(top_level_key "error_top_level_key.yaml: line 8: unknown top-level key 'other'"
+           ${SCENES}/error_top_level_key.yaml)
+fuzz_error(name_too_long "key 'mesh.geometry': File name too long" ${INPUTS}/sod2d.yaml
+           mesh.geometry=${LONG_NAME}${LONG_NAME}${LONG_NAME})
+fuzz_error(mesh_size_tiny "key 'mesh.size': 1e-09 asks for about .* cells" ${INPUTS}/sod2d.yaml mesh.size=1e-9)
+fuzz_error(geo_exit "exit_command.geo: gmsh ended the process" ${INPUTS}/sod2d.yaml
+           mesh.geometry=${PROJECT_SOURCE_DIR}/tests/meshes/exit_command.geo)
+fuzz_error(second_order_element "one_tri6.msh: line 47: element 22 has type 9, a second-order element"
+           ${SCENES}/inverted.yaml mesh.file=../meshes/one_tri6.msh)
+fuzz_error(tube_scan_step "key 'stability.speed_step': .* scan points" ${INPUTS}/tube_stability.yaml
+           stability.speed_step=1e-320)
+fuzz_error(tube_tolerance "key 'stability.tolerance': must be in" ${INPUTS}/tube_stability.yaml
+           stability.tolerance=1e-320)
 # The study and plot scripts in apps/ gave Python tracebacks on a bad argument or a missing input folder.
 add_test(NAME apps_script_errors COMMAND bash ${SCRIPTS}/script_errors.sh ${PYTHON} ${PROJECT_SOURCE_DIR}/apps)
 set_tests_properties(apps_script_errors PROPERTIES LABELS regression PASS_REGULAR_EXPRESSION "script_errors: PASS")
