@@ -5,6 +5,7 @@
  */
 #pragma once
 
+#include <cmath>
 #include <filesystem>
 #include <memory>
 #include <string>
@@ -321,6 +322,14 @@ template <int D, class P> class GprSystem : public TimeSystem
         const std::vector<double>& run = in.numbers("run");
         if ((l.size() != 7 && l.size() != 8) || run.size() != 10 + D) // 7: before largestStable was kept
             throw InputError("--restart '" + path + "': the loop's state has the wrong length");
+        // a checksum guards the bytes, not the values: a NaN dump index stopped the writer with an internal error
+        const char* names[] = {"time", "last step", "next output time", "step count", "dump count", "retries",
+                               "next checkpoint time", "largest stable step"};
+        for (std::size_t k = 0; k < l.size(); ++k)
+            if (!std::isfinite(l[k]) || ((k == 0 || k >= 3) && k != 6 && l[k] < 0.0) ||
+                (k >= 3 && k <= 5 && !(l[k] < 2e9 && l[k] == std::floor(l[k])))) // counts: whole, int-sized
+                throw InputError("--restart '" + path + "': the loop's " + names[k] + " is " +
+                                 (std::isfinite(l[k]) ? jsonNumber(l[k]) : std::string("not a finite number")));
         LoopState s;
         s.t = l[0];
         s.dtPrev = l[1];

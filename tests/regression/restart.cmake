@@ -63,6 +63,7 @@ restart_error(corrupt_text ${WORK}/corrupt_text.h5 "corrupt: text 'physics' does
 restart_error(corrupt_format ${WORK}/corrupt_format.h5
               "not a unilag checkpoint of this version \\(format '\\?\\?ilag checkpoint 4', expected 'unilag checkpoint 4'\\)$"
               ${SMALL_SEDOV})
+restart_error(forged_loop ${WORK}/forged_loop.h5 "the loop's dump count is not a finite number$" ${SMALL_SEDOV})
 restart_error(other_mesh ${CK} "a checkpoint of another run \\(cells '1018', this scene '4048'\\)" ${SMALL_SEDOV}
               --set mesh.size=0.0288)
 restart_error(other_order ${CK} "a checkpoint of another run \\(order '1', this scene '2'\\)" ${SMALL_SEDOV}
