@@ -107,4 +107,51 @@ void minReduce(const char* label, LO n, const F& f, double (&out)[N], bool dynam
         Kokkos::parallel_reduce(label, range(n), functor, result);
 }
 
+/*! The largest f(i) over [0, n), the lowest i among equal values, and M numbers of that i (e.g. its centroid) in one
+ *  pass: result [value, i, payload...]. f(i, double (&payload)[M]) returns the value and fills the payload. The
+ *  (value, lowest index) order does not depend on the joins, so the result is the same for any thread count. */
+template <int M, class F>
+struct LargestAt
+{
+    using value_type = double[];
+    using size_type = std::size_t;
+    const unsigned value_count = 2 + M;
+    F f;
+    KOKKOS_INLINE_FUNCTION static bool before(const volatile double* a, const volatile double* b)
+    {
+        return a[0] > b[0] || (a[0] == b[0] && a[1] < b[1]);
+    }
+    KOKKOS_INLINE_FUNCTION void operator()(const LO i, value_type acc) const
+    {
+        double mine[2 + M];
+        double(&payload)[M] = *reinterpret_cast<double(*)[M]>(mine + 2);
+        mine[0] = f(i, payload);
+        mine[1] = double(i);
+        if (before(mine, acc))
+            for (int k = 0; k < 2 + M; ++k)
+                acc[k] = mine[k];
+    }
+    KOKKOS_INLINE_FUNCTION void init(value_type acc) const
+    {
+        acc[0] = Kokkos::reduction_identity<double>::max();
+        acc[1] = Kokkos::reduction_identity<double>::min();
+        for (int k = 2; k < 2 + M; ++k)
+            acc[k] = 0.0;
+    }
+    KOKKOS_INLINE_FUNCTION void join(volatile value_type dst, const volatile value_type src) const
+    {
+        if (before(src, dst))
+            for (int k = 0; k < 2 + M; ++k)
+                dst[k] = src[k];
+    }
+};
+
+template <int M, class F>
+void largestAt(const char* label, LO n, const F& f, double (&out)[2 + M])
+{
+    LargestAt<M, F> functor{2 + M, f};
+    Kokkos::View<double*, Kokkos::HostSpace, Kokkos::MemoryUnmanaged> result(out, 2 + M);
+    Kokkos::parallel_reduce(label, range(n), functor, result);
+}
+
 } // namespace unilag

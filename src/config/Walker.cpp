@@ -166,12 +166,13 @@ std::string num(double v)
     return os.str();
 }
 
-void refuseTooManyDumps(const ConfigNode& node, const std::string& key, double interval, double endTime)
+void refuseTooManyDumps(const ConfigNode& node, const std::string& key, double interval, double endTime,
+                        const std::string& what, const std::string& zero)
 {
     constexpr double maxDumps = 1e5;
     if (interval > 0.0 && endTime / interval > maxDumps)
-        node.fail(key, num(interval) + " makes " + num(std::floor(endTime / interval)) + " dumps to the end time " +
-                           num(endTime) + ": at most 100000 (0 writes the first and last states only)");
+        node.fail(key, num(interval) + " makes " + num(std::floor(endTime / interval)) + " " + what +
+                           " to the end time " + num(endTime) + ": at most 100000 (0 " + zero + ")");
 }
 
 std::string resolvePath(const std::string& dir, const std::string& p)

@@ -88,8 +88,11 @@ class ConfigNode
 std::string num(double v);
 
 /*! Refuses an output interval (key of node) that makes more than 100,000 dumps to endTime: each dump clips the step
- *  to its time, so a tiny interval fills the disk and stalls the run. 0 (first and last states only) passes. */
-void refuseTooManyDumps(const ConfigNode& node, const std::string& key, double interval, double endTime);
+ *  to its time, so a tiny interval fills the disk and stalls the run (a checkpoint every 1e-17 looped at t = 0).
+ *  0 passes; what / zero: the name of what is written and what 0 means, for the message. */
+void refuseTooManyDumps(const ConfigNode& node, const std::string& key, double interval, double endTime,
+                        const std::string& what = "dumps",
+                        const std::string& zero = "writes the first and last states only");
 
 //! p resolved against the scene's folder dir (absolute paths stay as they are).
 std::string resolvePath(const std::string& dir, const std::string& p);

@@ -2,7 +2,7 @@
  *  \brief The largest cell density of a run (summary.json `largest_density`; the --check bound exact.max_density).
  *  A strong shock compresses an ideal gas to at most (gamma + 1) / (gamma - 1) times its density, and a scheme that
  *  overshoots at a front shows it there first (docs/sedov-peak.md); dumps every 0.1 miss most of it. Each rank
- *  keeps its record after every accepted step (one reduction; a second where its record rises); the ranks' records
+ *  keeps its record after every accepted step (one reduction, with the cell and its centroid); the ranks' records
  *  combine at the end by the largest value, then the earliest time, then the lowest global id, so that the record is
  *  the same on any number of ranks and threads (owned cells are sorted by global id).
  */
@@ -38,32 +38,25 @@ struct DensityPeak
     }
 };
 
-//! Raises this rank's record `peak` to the owned cells' largest density of the state at time t.
+//! Raises this rank's record `peak` to the owned cells' largest density of the state at time t (one pass).
 template <int D, class P> void notePeakDensity(const GprModel<D, P>& md, double t, DensityPeak& peak)
 {
     const ConstField state = md.read("state");
+    const auto centroid = md.geom.centroid;
     constexpr int omega = StateLayout<D, P>::omega;
-    const LO n = md.m.nOwnedCells;
-    double least[1]; // of -rho: the largest density
-    minReduce<1>("unilag::check::largest_density", n, KOKKOS_LAMBDA(const LO i, double(&acc)[1]) {
-        acc[0] = lesser(acc[0], -1.0 / state(i, omega));
-    }, least);
-    const double largest = -least[0];
-    if (!(largest > peak.value))
+    double r[2 + D]; // density, local index, centroid
+    largestAt<D>("unilag::check::largest_density", md.m.nOwnedCells, KOKKOS_LAMBDA(const LO i, double(&c)[D]) {
+        for (int d = 0; d < D; ++d)
+            c[d] = centroid(i, d);
+        return 1.0 / state(i, omega);
+    }, r);
+    if (!(r[0] > peak.value))
         return;
-    double first[1]; // the lowest index that has it
-    minReduce<1>("unilag::check::largest_density_cell", n, KOKKOS_LAMBDA(const LO i, double(&acc)[1]) {
-        if (-1.0 / state(i, omega) == -largest)
-            acc[0] = lesser(acc[0], double(i));
-    }, first);
-    const LO i = LO(first[0]);
-    auto c = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(),
-                                                 Kokkos::subview(md.geom.centroid, i, Kokkos::ALL()));
-    peak.value = largest;
+    peak.value = r[0];
     peak.t = t;
-    peak.cell = md.mesh->cellGid[i];
+    peak.cell = md.mesh->cellGid[LO(r[1])];
     for (int d = 0; d < 3; ++d)
-        peak.centroid[d] = d < D ? c(d) : 0.0;
+        peak.centroid[d] = d < D ? r[2 + d] : 0.0;
 }
 
 //! The run's record from every rank's: the largest value, then the earliest time, then the lowest id. Collective.

@@ -325,9 +325,11 @@ template <int D, class P> class GprSystem : public TimeSystem
         // a checksum guards the bytes, not the values: a NaN dump index stopped the writer with an internal error
         const char* names[] = {"time", "last step", "next output time", "step count", "dump count", "retries",
                                "next checkpoint time", "largest stable step"};
+        enum Kind { Any, NonNegative, Count }; // the last step and next times are -1 before their first
+        const Kind kinds[] = {NonNegative, Any, Any, Count, Count, Count, Any, NonNegative};
         for (std::size_t k = 0; k < l.size(); ++k)
-            if (!std::isfinite(l[k]) || ((k == 0 || k >= 3) && k != 6 && l[k] < 0.0) ||
-                (k >= 3 && k <= 5 && !(l[k] < 2e9 && l[k] == std::floor(l[k])))) // counts: whole, int-sized
+            if (!std::isfinite(l[k]) || (kinds[k] != Any && l[k] < 0.0) ||
+                (kinds[k] == Count && !(l[k] < 2e9 && l[k] == std::floor(l[k])))) // whole, int-sized
                 throw InputError("--restart '" + path + "': the loop's " + names[k] + " is " +
                                  (std::isfinite(l[k]) ? jsonNumber(l[k]) : std::string("not a finite number")));
         LoopState s;
