@@ -306,6 +306,7 @@ void readTime(ConfigNode& root, Scene& s)
     s.maxGrowth = t.positive("max_growth", s.maxGrowth);
     if (s.maxGrowth < 1.0)
         t.fail("max_growth", "must be >= 1");
+    s.maxStepsGiven = t.has("max_steps");
     s.maxSteps = t.integer("max_steps", s.maxSteps, 1, 2000000000L);
     s.maxRetries = int(t.integer("max_retries", s.maxRetries, 0, 60));
     t.rejectUnknown();

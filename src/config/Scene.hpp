@@ -155,6 +155,7 @@ struct Scene
     double initialTimeStep = 0.0; //!< 0: from the CFL condition, scaled by 0.1
     double maxGrowth = 1.1;
     long maxSteps = 10000000;
+    bool maxStepsGiven = false; //!< the scene caps the steps: a run that cannot reach its end time runs to the cap
     int maxRetries = 8;
 
     // scheme

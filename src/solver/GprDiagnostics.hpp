@@ -143,6 +143,39 @@ template <int D, class P> std::string collapse(const GprModel<D, P>& md, double 
     return mpi::firstMessage(md.comm, local);
 }
 
+/*! What sets the stable step (TimeSystem::stepLimit): the cell with the smallest acoustic time h / s (s the nodal
+ *  solver's signal speed), with the speed and length, so that a stalled run names the value behind it. */
+template <int D, class P> std::string stepLimit(const GprModel<D, P>& md)
+{
+    using S = StateLayout<D, P>;
+    const auto& dm = *md.mesh;
+    auto aux = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), md.aux);
+    auto length = Kokkos::create_mirror_view_and_copy(Kokkos::HostSpace(), md.geom.length);
+    auto time = [&](LO i) { return length(i) / std::max(aux(i, Aux::signal), 1e-300); };
+    double shortest = 1e300;
+    for (LO i = 0; i < dm.nOwnedCells; ++i)
+        shortest = std::min(shortest, time(i));
+    shortest = mpi::allMin(md.comm, shortest);
+    // of the cells at the shortest time, the lowest global id: the same cell on any number of ranks
+    LO cell = -1;
+    for (LO i = 0; i < dm.nOwnedCells; ++i)
+        if (time(i) == shortest && (cell < 0 || dm.cellGid[i] < dm.cellGid[cell]))
+            cell = i;
+    const double gid = mpi::allMin(md.comm, cell >= 0 ? double(dm.cellGid[cell]) : 1e300);
+    std::string local;
+    if (cell >= 0 && double(dm.cellGid[cell]) == gid)
+    {
+        auto sh = md.fields["state"].getLocalViewHost(Tpetra::Access::ReadOnly);
+        std::ostringstream os;
+        os.precision(6);
+        os << "the shortest acoustic time is cell " << dm.cellGid[cell] << "'s: signal speed " << aux(cell, Aux::signal)
+           << " over length " << length(cell) << " (density " << 1.0 / sh(cell, S::omega) << ", pressure "
+           << aux(cell, Aux::pressure) << "): check the materials' values and time.cfl";
+        local = os.str();
+    }
+    return mpi::firstMessage(md.comm, local);
+}
+
 /*! Per owned cell: position(centroid) (a radius, or x along a Riemann problem), density and volume, on the host.
  *  (Diagnostics at the end of a run and at outputs, not per step.) */
 template <int D, class P, class Position>

@@ -253,6 +253,7 @@ template <int D, class P> class GprSystem : public TimeSystem
     }
 
     std::string collapse(double t, double dt, long step) override { return unilag::collapse(md_, t, dt, step); }
+    std::string stepLimit() override { return unilag::stepLimit(md_); }
 
     void write(int index, double t) override
     {

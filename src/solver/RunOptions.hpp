@@ -29,6 +29,7 @@ inline TimeControl timeControl(const Scene& scene, const RunOptions& options)
     c.initialTimeStep = scene.initialTimeStep;
     c.maxGrowth = scene.maxGrowth;
     c.maxSteps = scene.maxSteps;
+    c.stopStalled = !scene.maxStepsGiven;
     c.maxRetries = scene.maxRetries;
     c.progress = options.progress;
     c.stepsCsv = (std::filesystem::path(scene.outputDirectory) / "steps.csv").string();

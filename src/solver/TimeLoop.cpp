@@ -277,9 +277,12 @@ class Progress
     Clock::time_point start_ = Clock::now(), last_ = start_;
 };
 
+//! The stalled-run check starts once the first step's tenth has grown back (1.1^25 > 10).
+constexpr long stallCheckFrom = 25;
+
 /*! The step size before any halving: the stable step, a tenth of it first, at most maxGrowth times the last one,
- *  and clipped to the next output time; unclipped is the step before that clip. Sets failure if it is not positive
- *  or has collapsed. */
+ *  and clipped to the next output time; unclipped is the step before that clip. Sets failure if it is not positive,
+ *  has collapsed or leaves the end time out of reach. */
 double chooseStep(TimeSystem& system, const TimeControl& c, double t, double dtPrev, long step, double nextOutput,
                   double& largestStable, double& unclipped, std::string& failure)
 {
@@ -291,10 +294,25 @@ double chooseStep(TimeSystem& system, const TimeControl& c, double t, double dtP
     }
     largestStable = std::max(largestStable, dt);
     dt = dtPrev > 0.0 ? std::min(dt, c.maxGrowth * dtPrev) : 0.1 * dt;
-    // collapsed: 1e-12 of the end time, or of 1e4 of the run's largest steps where the end time is far beyond them
-    if (dt < 1e-12 * std::min(c.endTime, 1e4 * largestStable))
+    // collapsed: 1e-8 of the run's largest step (a cell crushed at a rate the steps only approach: the piston of
+    // test collapse_diagnosis crept 880,000 steps to 1e-12), or 1e-12 of the end time if that is less
+    if (dt < std::max(1e-8 * largestStable, 1e-12 * std::min(c.endTime, 1e4 * largestStable)))
     {
         failure = system.collapse(t, dt, step);
+        return 0.0;
+    }
+    // stalled: a step near the run's largest (not a collapse, above) that leaves the end time more than 1e10 steps
+    // away. An unphysical value (gamma 1e20, cfl 1e-12) otherwise ran for hours, its ETA 1e20 s, to the default
+    // max_steps; a scene that sets time.max_steps runs to it (an end time far beyond, a step count wanted).
+    const double stepsLeft = (c.endTime - t) / dt;
+    if (c.stopStalled && step >= stallCheckFrom && dt > 1e-3 * largestStable && stepsLeft > 1e10)
+    {
+        failure = "the time step " + jsonNumber(dt) + " at t = " + jsonNumber(t) + " (step " + std::to_string(step) +
+                  ") leaves about " + jsonNumber(stepsLeft) + " steps to the end time " + jsonNumber(c.endTime) +
+                  ": the run would not end (time.max_steps, if set, runs it to that step count)";
+        const std::string where = system.stepLimit();
+        if (!where.empty())
+            failure += "; " + where;
         return 0.0;
     }
     unclipped = dt;

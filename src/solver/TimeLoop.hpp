@@ -32,6 +32,8 @@ class TimeSystem
     virtual void acceptStep(double t, double dt, int iterations) = 0;
     //! The diagnosis of a time step that has collapsed (where the mesh tangles).
     virtual std::string collapse(double t, double dt, long step) = 0;
+    //! What sets the stable step (where and why), for the diagnosis of a run that cannot end; "" if unknown.
+    virtual std::string stepLimit() { return ""; }
     //! Writes dump number index of the state at t (nothing if the scene writes no output).
     virtual void write(int index, double t) = 0;
     //! The conserved totals of the state (and whatever their check needs), the same on every rank.
@@ -65,6 +67,7 @@ struct TimeControl
     double initialTimeStep = 0.0; //!< 0: a tenth of the first stable step
     double maxGrowth = 1.1;       //!< of dt from one step to the next
     long maxSteps = 10000000;
+    bool stopStalled = true; //!< stop a run whose end time is out of reach (else it runs to maxSteps)
     int maxRetries = 8; //!< halvings of a rejected step before the run stops
     bool progress = true;
     std::string stepsCsv; //!< per accepted step: t, dt, iterations, halvings (rank 0; "" for none)

@@ -25,13 +25,14 @@ add_test(NAME error_too_many_threads COMMAND bash ${SCRIPTS}/expect_error.sh ${W
          --threads 600)
 set_tests_properties(error_nested_list error_fifo_inputs error_too_many_threads PROPERTIES LABELS regression)
 # An empty --output or --restart was ignored (the scene's folder written instead); an end time far beyond the run's
-# steps (1e300) was reported as a collapsed time step at t = 0 (exit 4): it runs to time.max_steps (exit 5).
+# steps (1e300) was reported as a collapsed time step at t = 0 (exit 4): it runs to time.max_steps (exit 5), which
+# the scene sets (past step 25, where a run that cannot reach its end time stops when max_steps is not set).
 add_test(NAME error_empty_output_option COMMAND bash -c "msg=$(${UNILAG} run ${INPUTS}/sod2d.yaml --quiet \
          --output '' 2>&1); rc=$?; echo \"$msg\"; [ $rc -eq 2 ] && echo \"$msg\" | grep -q -e \
          '--output needs a folder, found an empty string'")
 add_test(NAME end_time_far_runs_to_step_cap COMMAND bash -c "msg=$(${UNILAG} run ${INPUTS}/sod2d.yaml --quiet \
-         --set time.end=1e300 --set time.max_steps=20 --set output.interval=0 --output ${WORK}/far_end 2>&1); \
-         rc=$?; echo \"$msg\"; [ $rc -eq 5 ] && echo \"$msg\" | grep -q 'time.max_steps = 20 reached'")
+         --set time.end=1e300 --set time.max_steps=40 --set output.interval=0 --output ${WORK}/far_end 2>&1); \
+         rc=$?; echo \"$msg\"; [ $rc -eq 5 ] && echo \"$msg\" | grep -q 'time.max_steps = 40 reached'")
 set_tests_properties(error_empty_output_option end_time_far_runs_to_step_cap PROPERTIES LABELS regression)
 # An output interval of 1e-9 asked for 2e8 dumps (each clips the step): refused, as in the tube runs.
 add_test(NAME error_output_interval_tiny COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err_interval
@@ -150,10 +151,20 @@ add_test(NAME unstable_diagnosis COMMAND bash ${SCRIPTS}/expect_unstable.sh ${WO
          "\\(total ${NUM}, kinetic ${NUM}, before the step ${NUM}\\), squared sound speed -[0-9][0-9.e+-]*$"
          -- ${UNILAG} run ${SCENES}/unstable_tension.yaml --quiet)
 # A mesh that tangles (a piston crushes the box against the far wall at t = 1): the time step collapses and the
-# diagnosis names the step, the time and the smallest cell by global id (1 rank: 2 cost 5 s, mostly the 2500 steps).
+# diagnosis names the step, the time and the smallest cell by global id (1 rank: 53,000 steps, 4 s; 880,000 and 64 s
+# while the collapse floor was 1e-12 of the end time alone).
 add_test(NAME collapse_diagnosis COMMAND bash ${SCRIPTS}/expect_unstable.sh ${WORK}/collapse
-         "the run went unstable: the time step collapsed to ${NUM} at t = (1|0\\.99999[0-9]*) \\(step [0-9]+\\); the smallest cell is [0-9]+ with volume ${NUM}: the mesh is tangling there$"
+         "the run went unstable: the time step collapsed to ${NUM} at t = (1|0\\.9999[0-9]*) \\(step [0-9]+\\); the smallest cell is [0-9]+ with volume ${NUM}: the mesh is tangling there$"
          -- ${UNILAG} run ${SCENES}/piston_collapse.yaml --quiet --set mesh.size=0.34)
+# A steady step that cannot reach the end time (gamma 1e20: dt 1e-24 for t = 1, an ETA of 1e20 s) stops at once,
+# naming the cell with the shortest acoustic time and its speed, the same on 1 and 2 ranks; it ran to max_steps.
+add_test(NAME stalled_diagnosis COMMAND bash ${SCRIPTS}/expect_unstable.sh ${WORK}/stalled --ranks "1 2" --mpirun ${MPIEXEC_EXE}
+         "the run went unstable: the time step ${NUM} at t = ${NUM} \\(step 25\\) leaves about ${NUM} steps to the end "
+         "time 0.3: the run would not end \\(time.max_steps, if set, runs it to that step count\\); the shortest "
+         "acoustic time is cell [0-9]+'s: signal speed ${NUM} over length ${NUM} \\(density 1, pressure ${NUM}\\): "
+         "check the materials' values and time.cfl$"
+         -- ${UNILAG} run ${SMALL_SEDOV} --quiet --set materials.gas.gamma=1e20)
+set_tests_properties(stalled_diagnosis PROPERTIES LABELS "regression;mpi" PROCESSORS 2)
 set_tests_properties(unstable_diagnosis PROPERTIES LABELS "regression;mpi" PROCESSORS 2)
 set_tests_properties(collapse_diagnosis PROPERTIES LABELS regression)
 set_tests_properties(error_malformed_scene error_unknown_key error_inverted_mesh error_negative_density
