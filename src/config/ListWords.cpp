@@ -103,6 +103,13 @@ void rejectOtherTopLevelKeys(const std::string& file, const std::string& text, c
         if (key != top)
             throw InputError(file + ": line " + std::to_string(line) + ": unknown top-level key '" + key +
                              "': a scene holds one section, '" + top + ":'");
+        // 'unilag: ~' or 'unilag: 1': the reader's assertion named no line
+        std::string value = l.substr(colon + 1);
+        value.erase(0, value.find_first_not_of(" \t\r"));
+        value.erase(value.find_last_not_of(" \t\r") + 1);
+        if (!value.empty() && value[0] != '#' && value[0] != '{')
+            throw InputError(file + ": line " + std::to_string(line) + ": '" + top + ":' holds the value '" +
+                             value.substr(0, 40) + "', not a section of keys");
     }
 }
 

@@ -1,6 +1,7 @@
 #include "config/Walker.hpp"
 
 #include <cmath>
+#include <cstdio>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -45,6 +46,8 @@ std::string entryText(const Teuchos::ParameterEntry& e)
 {
     if (e.isList())
         return "a section of keys";
+    if (e.isTwoDArray()) // [[1]]: Teuchos prints it as 1x1:{1}
+        return "a list of lists";
     if (e.isType<bool>())
         return e.getValue<bool>(nullptr) ? "'true'" : "'false'";
     std::ostringstream os;
@@ -157,6 +160,27 @@ void applyOverride(Teuchos::ParameterList& root, const std::string& file, const 
         list->set(key, d);
 }
 
+/*! The parser's "error: Parser failure at line N column M of FILE" with line N's text instead of the file name
+ *  (-.inf or [] in a scene gave only the position); any other message as it is. */
+std::string withLineText(const std::string& message, const std::string& text)
+{
+    long line = 0, column = 0;
+    const auto at = message.find("Parser failure at line ");
+    if (at == std::string::npos ||
+        std::sscanf(message.c_str() + at, "Parser failure at line %ld column %ld", &line, &column) != 2 || line < 1)
+        return message;
+    std::size_t begin = 0;
+    for (long k = 1; k < line && begin != std::string::npos; ++k)
+        begin = text.find('\n', begin) == std::string::npos ? std::string::npos : text.find('\n', begin) + 1;
+    if (begin == std::string::npos)
+        return message;
+    std::string l = text.substr(begin, text.find('\n', begin) - begin);
+    l.erase(l.find_last_not_of(" \t\r") + 1);
+    l.erase(0, l.find_first_not_of(" \t"));
+    return "line " + std::to_string(line) + ", column " + std::to_string(column) + ": the YAML reader cannot parse '" +
+           printable(l, 80) + "'";
+}
+
 } // namespace
 
 std::string num(double v)
@@ -202,12 +226,10 @@ Teuchos::RCP<Teuchos::ParameterList> readYaml(const std::string& file, const std
         throw InputError(file + ": scene file not found");
     if (!problem.empty())
         throw InputError(file + ": " + problem);
-    {
-        std::ifstream in(file);
-        const std::string text(std::istreambuf_iterator<char>(in), {});
-        rejectWordsInLists(file, text);
-        rejectOtherTopLevelKeys(file, text, top);
-    }
+    std::ifstream in(file);
+    const std::string text(std::istreambuf_iterator<char>(in), {});
+    rejectWordsInLists(file, text);
+    rejectOtherTopLevelKeys(file, text, top);
     Teuchos::RCP<Teuchos::ParameterList> list;
     try
     {
@@ -223,7 +245,7 @@ Teuchos::RCP<Teuchos::ParameterList> readYaml(const std::string& file, const std
         if (first.find(".hpp:") != std::string::npos || first.find(".cpp:") != std::string::npos)
             first = "a list or section where a single value belongs (inside a list such as [0.0, [1]], or as the "
                     "top-level entry); the YAML reader does not say which line";
-        throw InputError(file + ": malformed YAML: " + first);
+        throw InputError(file + ": malformed YAML: " + withLineText(first, text));
     }
     if (list->name() != top)
         throw InputError(file + ": the top-level key must be '" + top + ":', found '" + list->name() + "'");

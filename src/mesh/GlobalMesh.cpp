@@ -130,6 +130,15 @@ void assignFaceGroups(const std::string& source, GlobalMesh& m, const std::vecto
                          std::to_string(m.cellTag[overShared->cell]) + ")");
 }
 
+//! All nodes at one z (a 2D mesh): a tetrahedron in it was said to be degenerate, in a region named by its tag.
+bool flat(const std::vector<double>& xyz)
+{
+    for (std::size_t i = 5; i < xyz.size(); i += 3)
+        if (xyz[i] != xyz[2])
+            return false;
+    return true;
+}
+
 void extract(const std::string& source, GlobalMesh& m)
 {
     m.dim = gmsh::model::getDimension();
@@ -151,6 +160,9 @@ void extract(const std::string& source, GlobalMesh& m)
             if (std::abs(xyz[3 * i + 2]) > 0.0)
                 throw InputError(source + ": node " + std::to_string(nodeTags[i]) +
                                  " has z != 0; a 2D mesh must lie in the plane z = 0");
+    if (m.dim == 3 && flat(xyz))
+        throw InputError(source + ": the mesh has 3D elements (tetrahedra) but every node at the same z: a 2D mesh "
+                         "takes triangles only");
 
     const int cellType = gmsh::model::mesh::getElementType(m.dim == 2 ? "Triangle" : "Tetrahedron", 1);
     gmsh::vectorpair groups;

@@ -122,6 +122,7 @@ class MshLines
 };
 
 using NodeTags = std::unordered_set<long long>;
+using ElementTags = std::unordered_set<long long>;
 
 void addNode(MshLines& in, NodeTags& nodes, const std::string& tag)
 {
@@ -129,9 +130,12 @@ void addNode(MshLines& in, NodeTags& nodes, const std::string& tag)
         in.fail("node " + tag + " is defined twice");
 }
 
-//! The node tags of an element (fields first .. end of t), each defined in $Nodes.
-void checkElementNodes(MshLines& in, const NodeTags& nodes, const Tokens& t, std::size_t first)
+//! The node tags of an element (fields first .. end of t), each defined in $Nodes; its own tag used once (gmsh
+//! kept one of two elements with the same tag and the other's face was said to be in no boundary group).
+void checkElementNodes(MshLines& in, const NodeTags& nodes, ElementTags& elements, const Tokens& t, std::size_t first)
 {
+    if (!elements.insert(in.integer(t[0], "an element tag")).second)
+        in.fail("element " + t[0] + " is defined twice");
     for (std::size_t k = first; k < t.size(); ++k)
         if (!nodes.count(in.integer(t[k], "an element's node")))
             in.fail("element " + t[0] + " refers to node " + t[k] + ", which $Nodes does not define");
@@ -153,6 +157,7 @@ void nodes22(MshLines& in, NodeTags& nodes)
 void elements22(MshLines& in, const NodeTags& nodes)
 {
     const long long n = in.count(in.record(1, "the element count")[0], "the element count");
+    ElementTags elements;
     for (long long k = 0; k < n; ++k)
     {
         const Tokens t = in.record(0, "an element 'tag type ntags tags... nodes...'");
@@ -170,7 +175,7 @@ void elements22(MshLines& in, const NodeTags& nodes)
                     std::to_string(3 + ntags + nv) + " fields, found " + std::to_string(t.size()));
         for (long long g = 0; g < ntags; ++g)
             in.integer(t[3 + g], "element " + t[0] + "'s tag");
-        checkElementNodes(in, nodes, t, std::size_t(3 + ntags));
+        checkElementNodes(in, nodes, elements, t, std::size_t(3 + ntags));
     }
     in.end("Elements");
 }
@@ -226,6 +231,7 @@ void elements41(MshLines& in, const NodeTags& nodes)
     const Tokens h = in.record(4, "the element header 'blocks elements min-tag max-tag'");
     const long long blocks = in.count(h[0], "the element block count"), total = in.count(h[1], "the element count");
     long long seen = 0;
+    ElementTags elements;
     for (long long b = 0; b < blocks; ++b)
     {
         const Tokens t = in.record(4, "an element block 'dim entity type count'");
@@ -237,7 +243,7 @@ void elements41(MshLines& in, const NodeTags& nodes)
             in.fail("the element block of entity " + t[1] + secondOrderText(type));
         const long long n = in.count(t[3], "a block's element count");
         for (long long k = 0; k < n; ++k)
-            checkElementNodes(in, nodes, in.record(std::size_t(1 + nv), "an element 'tag nodes...'"), 1);
+            checkElementNodes(in, nodes, elements, in.record(std::size_t(1 + nv), "an element 'tag nodes...'"), 1);
         seen += n;
     }
     if (seen != total)
@@ -280,6 +286,10 @@ void checkMshFile(const std::string& path)
         if (version.empty())
         {
             const Tokens t = in.record(3, "the format line 'version file-type data-size'");
+            // A binary file has its one-integer endianness record here; a text file says file-type 0 (with 1,
+            // gmsh read the text as binary and named an element type of 824193312).
+            if (t[1] == "1" && in.next(line) && line == "$EndMeshFormat")
+                in.fail("after a format line of file-type 1 (binary) the file goes on as text: file-type 0 is text");
             if (t[1] != "0" || (t[0] != "2.2" && t[0] != "4.1"))
                 return; // binary, or another version: unchecked
             version = t[0];

@@ -75,6 +75,21 @@ fuzz_error(tube_scan_step "key 'stability.speed_step': .* scan points" ${INPUTS}
            stability.speed_step=1e-320)
 fuzz_error(tube_tolerance "key 'stability.tolerance': must be in" ${INPUTS}/tube_stability.yaml
            stability.tolerance=1e-320)
+# Session 35: a .msh whose format line says binary over a text body (gmsh: "Unknown type of element 824193312"),
+# two elements with one tag (gmsh kept one: "boundary face ... in no boundary physical group"), a tetrahedron in a
+# flat mesh ("degenerate" in a region named '2'); [[1]] for a number ('1x1:{1}'), 'unilag: ~' (no line), -.inf
+# (a line and column only).
+fuzz_error(msh_text_as_binary "text_as_binary.msh: line 3: after a format line of file-type 1 \\(binary\\) the file goes on as text"
+           ${SCENES}/inverted.yaml mesh.file=../meshes/text_as_binary.msh)
+fuzz_error(msh_duplicate_element "duplicate_element.msh: line 26: element 7 is defined twice"
+           ${SCENES}/inverted.yaml mesh.file=../meshes/duplicate_element.msh)
+fuzz_error(msh_flat_tet "flat_tet.msh: the mesh has 3D elements \\(tetrahedra\\) but every node at the same z"
+           ${SCENES}/inverted.yaml mesh.file=../meshes/flat_tet.msh)
+fuzz_error(list_of_lists "key 'time.cfl': expected a number, found a list of lists$" ${SCENES}/error_list_of_lists.yaml)
+fuzz_error(null_section "error_null_section.yaml: line 2: 'unilag:' holds the value '~', not a section of keys"
+           ${SCENES}/error_null_section.yaml)
+fuzz_error(minus_inf "error_minus_inf.yaml: malformed YAML: line 7, column 28: the YAML reader cannot parse 'time: \\{ end: 0.1, cfl: -.inf \\}'"
+           ${SCENES}/error_minus_inf.yaml)
 # The study and plot scripts in apps/ gave Python tracebacks on a bad argument or a missing input folder.
 add_test(NAME apps_script_errors COMMAND bash ${SCRIPTS}/script_errors.sh ${PYTHON} ${PROJECT_SOURCE_DIR}/apps)
 set_tests_properties(apps_script_errors PROPERTIES LABELS regression PASS_REGULAR_EXPRESSION "script_errors: PASS")
