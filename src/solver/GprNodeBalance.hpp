@@ -41,7 +41,7 @@ BalanceRates<D> GprOperator<D, P>::balanceOf(const SubcellForces<D, P>& forces, 
 {
     ScopedTimer timer(md_.timers, Phase::Check);
     NodeBalanceRates<D> local = nodeBalance<D, P>(forces, md_.bc, balanceNodes_, balanceScratch_);
-    worstImbalance<D>(balanceNodes_, balanceScratch_, 1e-100 * mpi::allMax(md_.comm, local.maxForce), local);
+    worstImbalance<D>(balanceNodes_, balanceScratch_, 1e-30 * mpi::allMax(md_.comm, local.maxForce), local);
     BalanceRates<D> r;
     double sums[D + 3];
     for (int d = 0; d < D; ++d)

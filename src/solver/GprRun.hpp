@@ -247,6 +247,8 @@ void writeSummary(const GprModel<D, P>& md, const GprSystem<D, P>& sys, const Ru
                          {"heat", P::heat ? "true" : "false"}});
     s.object("picard_iterations", {{"mean", jsonNumber(picardMean)}, {"max", std::to_string(sys.picardMax())}});
     s.integer("first_order_fallback_cells", sys.fallbackCells());
+    if (sys.usesArs222())
+        s.integer("midpoint_steps", sys.midpointSteps());
     s.number("t_final", r.state.t).number("wall_seconds", r.wallSeconds).number("cell_steps_per_second", cellSteps);
     if (!options.restart.empty())
         s.object("restarted_from", {{"step", std::to_string(from.steps)}, {"t", jsonNumber(from.t)}});

@@ -82,6 +82,7 @@ template <int D, class P> class GprSystem : public TimeSystem
      *  cell at first order, before the time loop halves dt (docs/gpr-model.md 2.5, "A posteriori fallback"). */
     bool attemptStep(double t, double dt, int attempt, int& iterations) override
     {
+        midpointStep_ = false;
         bool ok = integrate(t, dt, attempt > 0);
         for (int round = 0; !ok && md_.order2 && stage_.failure.empty() && round <= maxFallbackRounds; ++round)
         {
@@ -98,6 +99,14 @@ template <int D, class P> class GprSystem : public TimeSystem
             op_.solveNodes();
             md_.fields.copy("v_node", "v_node0");
             ok = integrate(t, dt, false);
+        }
+        if (!ok && ars222_ && stage_.failure.empty())
+        {
+            // ARS(2,2,2)'s final row weighs the t^n rates by beta - 1 < 0: a cold cell the shock reaches within the
+            // step (its rates 0 at t^n, O(1) at stage 1 or the reverse) is left a negative energy at any dt
+            // (docs/ars222.md). The step is taken again by the midpoint scheme, which is conservative as well.
+            midpointStep_ = true;
+            ok = integrate(t, dt, true);
         }
         iterations = stage_.iterations;
         return ok;
@@ -121,6 +130,11 @@ template <int D, class P> class GprSystem : public TimeSystem
         ++stepsSincePartition_;
         maxGcl_ = std::max(maxGcl_, stage_.check.maxGclDefect);
         balance_.accumulate(op_.lastBalance(), t, dt);
+        if (midpointStep_)
+        {
+            ++midpointSteps_;
+            md_.fields.copy("v_node", "ars_v1"); // the midpoint step's lagged velocities (lagged()) for the next one
+        }
         // ARS(2,2,2): the next step's impedances lag stage 1's node velocities (a nodal solution), not the combined
         // ones: their extrapolation (weight beta - 1 < 0 on v0) made z at t^n differ from stage 1's at any dt by the
         // 3D Sedov deposit (R0 = 1300 R1), and the final row, weighing R0 by beta - 1, left a negative energy.
@@ -291,6 +305,7 @@ template <int D, class P> class GprSystem : public TimeSystem
                                    balance_.work,        balance_.passiveWork, balance_.heat, balance_.maxImbalance,
                                    double(balance_.worstNode), balance_.worstTime};
         run.insert(run.end(), balance_.impulse, balance_.impulse + D);
+        run.push_back(double(midpointSteps_));
         out.numbers("run", run);
         out.commit();
     }
@@ -321,7 +336,8 @@ template <int D, class P> class GprSystem : public TimeSystem
         op_.computeAux(lagged());
         const std::vector<double>& l = in.numbers("loop");
         const std::vector<double>& run = in.numbers("run");
-        if ((l.size() != 7 && l.size() != 8) || run.size() != 10 + D) // 7: before largestStable was kept
+        // 7 loop numbers and 10 + D run numbers: written before largestStable and midpointSteps_ were kept
+        if ((l.size() != 7 && l.size() != 8) || (run.size() != 10 + D && run.size() != 11 + D))
             throw InputError("--restart '" + path + "': the loop's state has the wrong length");
         // a checksum guards the bytes, not the values: a NaN dump index stopped the writer with an internal error
         const char* names[] = {"time", "last step", "next output time", "step count", "dump count", "retries",
@@ -360,6 +376,7 @@ template <int D, class P> class GprSystem : public TimeSystem
         balance_.worstTime = run[9];
         for (int d = 0; d < D; ++d)
             balance_.impulse[d] = run[10 + d];
+        midpointSteps_ = run.size() > 10 + D ? long(run[10 + D]) : 0;
         return s;
     }
 
@@ -371,6 +388,9 @@ template <int D, class P> class GprSystem : public TimeSystem
     long picardTotal() const { return picardTotal_; }
     //! Cells marked by the a posteriori first-order fallback, summed over the steps (order 2).
     long fallbackCells() const { return fallbackCells_; }
+    //! ars222: the steps that the midpoint scheme took where ARS(2,2,2) left a cell inadmissible.
+    long midpointSteps() const { return midpointSteps_; }
+    bool usesArs222() const { return ars222_; }
     int picardMax() const { return picardMax_; }
     //! The smallest cell shape quality at t = 0: set by a new run, read from the checkpoint by a restart.
     double initialQuality() const { return initialQuality_; }
@@ -412,7 +432,9 @@ template <int D, class P> class GprSystem : public TimeSystem
         if constexpr (P::strain)
             if (restore)
                 md_.fields.copy("sigma0", "sigma");
-        return ars222_ ? ars_.step(t, dt, stage_) : md_.order2 ? midpoint_.step(t, dt, stage_) : euler_.step(t, dt, stage_);
+        if (ars222_ && !midpointStep_)
+            return ars_.step(t, dt, stage_);
+        return md_.order2 ? midpoint_.step(t, dt, stage_) : euler_.step(t, dt, stage_);
     }
 
     GprModel<D, P>& md_;
@@ -437,6 +459,8 @@ template <int D, class P> class GprSystem : public TimeSystem
     static constexpr int maxFallbackRounds = 4;
     long picardTotal_ = 0;
     long fallbackCells_ = 0;
+    bool midpointStep_ = false; //!< ars222: this attempt is the midpoint scheme's (attemptStep)
+    long midpointSteps_ = 0;    //!< ars222: steps the midpoint scheme took, summed
     int picardMax_ = 0;
     double maxGcl_ = 0.0;
     double initialQuality_ = 0.0; //!< the mesh's smallest shape quality at t = 0 (kept through a restart)

@@ -7,9 +7,11 @@ output directory:
     >= 0 up to the solver's round-off floor (the ambient gas stays cold or is heated, never below 0), the density
     positive;
   - L1(density) against the exact solution (summary.json) <= MAX_L1, and at least MIN_L1 (a sanity floor: an
-    error far below the measured one means the exact profile or the run is not what the bound was set for).
+    error far below the measured one means the exact profile or the run is not what the bound was set for);
+  - with MAX_MIDPOINT (an ars222 run): between 1 and MAX_MIDPOINT steps taken by the midpoint scheme where ARS(2,2,2)
+    left a cell inadmissible (summary.json midpoint_steps): the fallback acted, and ARS took the rest.
 
-usage: cold_gas.py RUN_DIR T_END MAX_L1 MIN_L1
+usage: cold_gas.py RUN_DIR T_END MAX_L1 MIN_L1 [MAX_MIDPOINT]
 """
 import glob
 import json
@@ -20,9 +22,10 @@ import numpy as np
 
 
 def main():
-    if len(sys.argv) != 5:
+    if len(sys.argv) not in (5, 6):
         sys.exit(__doc__)
     run, t_end, max_l1, min_l1 = sys.argv[1], float(sys.argv[2]), float(sys.argv[3]), float(sys.argv[4])
+    max_midpoint = int(sys.argv[5]) if len(sys.argv) == 6 else None
     ok = True
     with open(f"{run}/summary.json") as f:
         s = json.load(f)
@@ -51,6 +54,11 @@ def main():
     good = min_l1 <= l1 <= max_l1
     print(f"L1(density) {l1:.5g} (bounds {min_l1:.3g} .. {max_l1:.3g}){'' if good else '  FAIL'}")
     ok &= good
+    if max_midpoint is not None:
+        steps = s.get("midpoint_steps", -1)
+        good = 1 <= steps <= max_midpoint
+        print(f"midpoint steps {steps} of {s['steps']} (bounds 1 .. {max_midpoint}){'' if good else '  FAIL'}")
+        ok &= good
     print("cold_gas:", "PASS" if ok else "FAIL")
     sys.exit(0 if ok else 1)
 
