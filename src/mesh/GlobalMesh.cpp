@@ -133,6 +133,8 @@ void assignFaceGroups(const std::string& source, GlobalMesh& m, const std::vecto
 //! All nodes at one z (a 2D mesh): a tetrahedron in it was said to be degenerate, in a region named by its tag.
 bool flat(const std::vector<double>& xyz)
 {
+    if (xyz.size() < 12) // fewer nodes than one tetrahedron: gmsh's own checks speak
+        return false;
     for (std::size_t i = 5; i < xyz.size(); i += 3)
         if (xyz[i] != xyz[2])
             return false;
