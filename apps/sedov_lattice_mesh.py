@@ -33,23 +33,21 @@ def rows_of_nodes(size):
     return rows, SIDE / ny
 
 
-def zip_rows(lower, upper):
+def zip_rows(lower, upper, xs):
     """Triangles between two rows of node numbers (sorted by x), advancing along whichever row's next edge
     midpoint comes first; xs maps a node number to its x."""
-    def triangles(xs):
-        i = k = 0
-        out = []
-        while i < len(lower) - 1 or k < len(upper) - 1:
-            take_lower = k == len(upper) - 1 or (
-                i < len(lower) - 1 and xs[lower[i]] + xs[lower[i + 1]] < xs[upper[k]] + xs[upper[k + 1]])
-            if take_lower:
-                out.append((lower[i], lower[i + 1], upper[k]))
-                i += 1
-            else:
-                out.append((lower[i], upper[k + 1], upper[k]))
-                k += 1
-        return out
-    return triangles
+    i = k = 0
+    out = []
+    while i < len(lower) - 1 or k < len(upper) - 1:
+        take_lower = k == len(upper) - 1 or (
+            i < len(lower) - 1 and xs[lower[i]] + xs[lower[i + 1]] < xs[upper[k]] + xs[upper[k + 1]])
+        if take_lower:
+            out.append((lower[i], lower[i + 1], upper[k]))
+            i += 1
+        else:
+            out.append((lower[i], upper[k + 1], upper[k]))
+            k += 1
+    return out
 
 
 def lattice(size):
@@ -62,7 +60,7 @@ def lattice(size):
     ys = {n + 1: c[1] for n, c in enumerate(coords)}
     elements = []
     for lower, upper in zip(rows[:-1], rows[1:]):
-        for a, b, c in zip_rows(lower, upper)(xs):
+        for a, b, c in zip_rows(lower, upper, xs):
             if (xs[b] - xs[a]) * (ys[c] - ys[a]) - (xs[c] - xs[a]) * (ys[b] - ys[a]) < 0:
                 b, c = c, b
             elements.append((2, 4, (a, b, c)))

@@ -170,10 +170,13 @@ std::string withLineText(const std::string& message, const std::string& text)
         std::sscanf(message.c_str() + at, "Parser failure at line %ld column %ld", &line, &column) != 2 || line < 1)
         return message;
     std::size_t begin = 0;
-    for (long k = 1; k < line && begin != std::string::npos; ++k)
-        begin = text.find('\n', begin) == std::string::npos ? std::string::npos : text.find('\n', begin) + 1;
-    if (begin == std::string::npos)
-        return message;
+    for (long k = 1; k < line; ++k)
+    {
+        begin = text.find('\n', begin);
+        if (begin == std::string::npos)
+            return message;
+        ++begin;
+    }
     std::string l = text.substr(begin, text.find('\n', begin) - begin);
     l.erase(l.find_last_not_of(" \t\r") + 1);
     l.erase(0, l.find_first_not_of(" \t"));
