@@ -1,11 +1,13 @@
 #!/usr/bin/env python3
 """The 2D Sedov peak-density study (issue 13, docs/sedov-peak.md): inputs/sedov2d.yaml at orders 1 and 2 on a
-sequence of mesh sizes, on the shipped gmsh quadrant and on the lattice with no small cell along a symmetry plane
-(apps/sedov_lattice_mesh.py). Each run records its largest cell density over every step (summary.json
+sequence of mesh sizes, as shipped (an equilateral lattice, `mesh.mesher: lattice`, limited by barth_jespersen) and on
+gmsh's frontal mesh of the same quadrant (with node_fit, its best limiter), whose half-size cells along the symmetry
+planes overshoot the density. Each run records its largest cell density over every step (summary.json
 `largest_density`); the bound is 1.15 x the exact peak 6 = 6.9. Prints a line per run, writes OUT_DIR/sedov_peak.csv
-and a PNG beside it (L1 of the density and the largest density against the cell count).
+and a PNG beside it (L1 of the density and the largest density against the cell count). --cold: pressure 0 instead of
+1e-6 (the gas at rest has no sound speed).
 
-usage: sedov_peak_study.py UNILAG OUT_DIR [SIZE ...]   (default sizes 0.0577 0.0288 0.0144 0.0072: 1k to 64k)
+usage: sedov_peak_study.py UNILAG OUT_DIR [SIZE ...] [--cold]   (default sizes 0.0577 0.0288 0.0144 0.0072: 1k to 64k)
 """
 import csv
 import json
@@ -22,31 +24,14 @@ BOUND = 6.9
 FIELDS = ["mesh", "order", "size", "cells", "steps", "l1_density", "largest_density", "t", "x", "y", "wall_seconds"]
 
 
-def lattice_scene(out_dir, size):
-    """The scene with the lattice .msh for its mesh (mesh.file takes no size) and its exact table's full path."""
-    msh = os.path.join(out_dir, f"lattice_{size}.msh")
-    subprocess.run([sys.executable, os.path.join(HERE, "sedov_lattice_mesh.py"), str(size), msh], check=True,
-                   stdout=subprocess.DEVNULL)
-    with open(SCENE) as f:
-        text = f.read()
-    mesh = text[text.index("  mesh:"):text.index("  materials:")]
-    if "geometry: geometry/quadrant2d.geo" not in mesh or "table: exact/" not in text:
-        fail(f"{SCENE}: its mesh or exact table is not where this script expects them")
-    text = text.replace(mesh, f"  mesh:\n    file: {msh}\n").replace(
-        "table: exact/", f"table: {os.path.join(os.path.dirname(SCENE), 'exact')}/")
-    scene = os.path.join(out_dir, f"lattice_{size}.yaml")
-    with open(scene, "w") as f:
-        f.write(text)
-    return scene
+MESHES = {"lattice": [], "frontal": ["--set", "mesh.mesher=gmsh", "--set", "scheme.limiter=node_fit"]}
 
 
-def run(unilag, out_dir, mesh, order, size):
+def run(unilag, out_dir, mesh, order, size, cold):
     folder = os.path.join(out_dir, f"{mesh}_o{order}_{size}")
-    scene, mesh_set = SCENE, ["--set", f"mesh.size={size}"]
-    if mesh == "lattice":
-        scene, mesh_set = lattice_scene(out_dir, size), []
-    cmd = [unilag, "run", scene, "--quiet", "--threads", "1", "--output", folder, "--set", f"scheme.order={order}",
-           "--set", "output.interval=0"] + mesh_set
+    cmd = [unilag, "run", SCENE, "--quiet", "--threads", "1", "--output", folder, "--set", f"scheme.order={order}",
+           "--set", "output.interval=0", "--set", f"mesh.size={size}"] + MESHES[mesh]
+    cmd += ["--set", "regions.gas.pressure=0"] if cold else []
     done = subprocess.run(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE, text=True)
     if done.returncode != 0:
         fail(f"{' '.join(cmd)}: exit {done.returncode}: {done.stderr.strip()}")
@@ -58,12 +43,12 @@ def run(unilag, out_dir, mesh, order, size):
                 x=peak["centroid"][0], y=peak["centroid"][1], wall_seconds=s["wall_seconds"])
 
 
-def plot(rows, png):
+def plot(rows, png, cold):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
     fig, (ax1, ax2) = plt.subplots(1, 2, figsize=(11, 4.2))
-    for mesh, style in (("shipped", "-"), ("lattice", "--")):
+    for mesh, style in (("lattice", "-"), ("frontal", "--")):
         for order, color in ((1, "tab:blue"), (2, "tab:red")):
             sel = [r for r in rows if r["mesh"] == mesh and r["order"] == order]
             if not sel:
@@ -73,7 +58,7 @@ def plot(rows, png):
             ax1.loglog(cells, [r["l1_density"] for r in sel], style, marker="o", color=color, label=label)
             ax2.semilogx(cells, [r["largest_density"] for r in sel], style, marker="o", color=color, label=label)
     ax2.axhline(BOUND, color="k", lw=0.8, label="bound 6.9 (1.15 x 6)")
-    ax1.set(xlabel="cells", ylabel="L1(density) at t = 1", title="2D Sedov: error")
+    ax1.set(xlabel="cells", ylabel="L1(density) at t = 1", title=f"2D Sedov{' (p = 0)' if cold else ''}: error")
     ax2.set(xlabel="cells", ylabel="largest cell density over every step", title="2D Sedov: peak")
     for ax in (ax1, ax2):
         ax.grid(True, which="both", alpha=0.3)
@@ -83,17 +68,18 @@ def plot(rows, png):
 
 
 def main():
-    args = positional(2, __doc__.split("\n\n")[1], most=20)
+    args = positional(2, __doc__.split("\n\n")[1], most=20, flags=("--cold",))
+    cold = "--cold" in sys.argv[1:]
     unilag, out_dir = args[0], args[1]
     sizes = [number(a, "SIZE") for a in args[2:]] or [0.0577, 0.0288, 0.0144, 0.0072]
     if not os.access(unilag, os.X_OK):
         fail(f"{unilag}: not an executable")
     os.makedirs(out_dir, exist_ok=True)
     rows = []
-    for mesh in ("shipped", "lattice"):
+    for mesh in MESHES:
         for order in (1, 2):
             for size in sizes:
-                r = run(unilag, out_dir, mesh, order, size)
+                r = run(unilag, out_dir, mesh, order, size, cold)
                 rows.append(r)
                 print(f"{mesh:8s} order {order} {r['cells']:7d} cells {r['steps']:5d} steps  L1 {r['l1_density']:.5f}"
                       f"  largest {r['largest_density']:.3f} at t {r['t']:.3f} ({r['x']:.4f}, {r['y']:.4f})"
@@ -103,7 +89,7 @@ def main():
         w = csv.DictWriter(f, fieldnames=FIELDS)
         w.writeheader()
         w.writerows(rows)
-    plot(rows, csv_path.replace(".csv", ".png"))
+    plot(rows, csv_path.replace(".csv", ".png"), cold)
     print(f"wrote {csv_path} and sedov_peak.png")
 
 

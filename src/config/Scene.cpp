@@ -155,7 +155,7 @@ MaterialSpec readMaterial(ConfigNode& m)
     return spec;
 }
 
-//! mesh: a .geo to mesh at a size, or a .msh to read.
+//! mesh: a .geo to mesh at a size (by gmsh, or as a triangle lattice), or a .msh to read.
 void readMeshSection(ConfigNode& root, Scene& s)
 {
     ConfigNode mesh = root.sub("mesh", true);
@@ -166,6 +166,7 @@ void readMeshSection(ConfigNode& root, Scene& s)
     if (!s.geometry.empty())
     {
         s.meshSize = mesh.positive("size", 0.0, true);
+        s.meshLattice = mesh.choice("mesher", "gmsh", {"gmsh", "lattice"}) == "lattice";
         const std::string problem = config::inputFileProblem(s.geometry);
         if (!problem.empty())
             mesh.fail("geometry", problem + ": " + s.geometry);

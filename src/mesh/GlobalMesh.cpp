@@ -13,6 +13,7 @@
 #include "core/Format.hpp"
 #include "mesh/FaceKey.hpp"
 #include "mesh/GmshCrashGuard.hpp"
+#include "mesh/LatticeMesh.hpp"
 #include "mesh/MshCheck.hpp"
 
 namespace unilag
@@ -362,9 +363,15 @@ GlobalMesh loadMesh(const Scene& scene)
                 gmsh::option::setNumber("Mesh.MeshSizeMin", scene.meshSize);
                 gmsh::option::setNumber("Mesh.MeshSizeMax", scene.meshSize);
                 cells = estimatedCells(scene.meshSize);
-                if (cells <= maxEstimatedCells)
+                if (cells <= maxEstimatedCells && scene.meshLattice)
+                    meshAsLattice(source, scene.meshSize);
+                else if (cells <= maxEstimatedCells)
                     gmsh::model::mesh::generate(gmsh::model::getDimension());
             }
+        }
+        catch (const InputError&)
+        {
+            throw; // the lattice's own message
         }
         catch (...)
         {

@@ -64,7 +64,7 @@ restart_error(corrupt_format ${WORK}/corrupt_format.h5
               "not a unilag checkpoint of this version \\(format '\\?\\?ilag checkpoint 4', expected 'unilag checkpoint 4'\\)$"
               ${SMALL_SEDOV})
 restart_error(forged_loop ${WORK}/forged_loop.h5 "the loop's dump count is not a finite number$" ${SMALL_SEDOV})
-restart_error(other_mesh ${CK} "a checkpoint of another run \\(cells '1018', this scene '4048'\\)" ${SMALL_SEDOV}
+restart_error(other_mesh ${CK} "a checkpoint of another run \\(cells '988', this scene '3988'\\)" ${SMALL_SEDOV}
               --set mesh.size=0.0288)
 restart_error(other_order ${CK} "a checkpoint of another run \\(order '1', this scene '2'\\)" ${SMALL_SEDOV}
               --set scheme.order=2)
@@ -73,7 +73,7 @@ restart_error(other_material ${CK}
               "a checkpoint of another scene \\(materials.gas.gamma: '1.4' in the checkpoint, '1.67'" ${SMALL_SEDOV}
               --set materials.gas.gamma=1.67)
 restart_error(other_limiter ${CK}
-              "a checkpoint of another scene \\(scheme.limiter: 'node_fit' in the checkpoint, 'none'" ${SMALL_SEDOV}
+              "a checkpoint of another scene \\(scheme.limiter: 'barth_jespersen' in the checkpoint, 'none'" ${SMALL_SEDOV}
               --set scheme.limiter=none)
 restart_error(other_boundary ${CK}
               "a checkpoint of another scene \\(boundaries.outer.type: 'slip_wall' in the checkpoint, 'free'" ${SMALL_SEDOV}

@@ -3,7 +3,7 @@
 # without their input) with one error line and exit 2, never a Python traceback.
 set -u
 py=$1; apps=$2; fail=0
-for s in ab_throughput plate_period rotation_study sedov_lattice_mesh sedov_peak_study tube_artery_plot \
+for s in ab_throughput plate_period rotation_study sedov_peak_study tube_artery_plot \
          tube_gas_rod_study_plot tube_helix_dispersion_plot tube_shock_study_plot tube_stability_plot \
          tube_wall_shock_study_plot; do
     for arg in --bogus /nonexistent_folder; do
