@@ -109,7 +109,8 @@ add_test(NAME error_gmsh_crash COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/e
 # gmsh 4.8.4 throws from its own threads on this one: the runtime's terminate message must not add a line.
 add_test(NAME error_gmsh_throw COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err_gmsh_throw
          "octant_gmsh_throw.geo: gmsh crashed reading or meshing it" -- ${UNILAG} run ${INPUTS}/sedov3d.yaml
-         --set mesh.size=0.3 --set mesh.geometry=${CMAKE_CURRENT_SOURCE_DIR}/meshes/octant_gmsh_throw.geo)
+         --set mesh.size=0.3 --set mesh.mesher=gmsh
+         --set mesh.geometry=${CMAKE_CURRENT_SOURCE_DIR}/meshes/octant_gmsh_throw.geo)
 # Elements other than linear simplices in a region (here quadrangles beside triangles) are refused by name.
 add_test(NAME error_mixed_elements COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err_mixed_elements
          "mixed_tri_quad.geo: element [0-9]+ is a Quadrilateral 4 \\(and [0-9]+ more\\): unilag takes linear triangles"
@@ -117,7 +118,7 @@ add_test(NAME error_mixed_elements COMMAND bash ${SCRIPTS}/expect_error.sh ${WOR
          --set mesh.geometry=${CMAKE_CURRENT_SOURCE_DIR}/meshes/mixed_tri_quad.geo)
 # mesh.mesher: lattice meshes one axis-aligned rectangle (LatticeMesh.hpp); a quarter annulus is refused by its arc.
 add_test(NAME error_lattice_not_rectangle COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err_lattice
-         "quarter_annulus2d.geo: mesh.mesher lattice meshes an axis-aligned rectangle; curve [0-9]+ is not on a side"
+         "quarter_annulus2d.geo: mesh.mesher lattice meshes an axis-aligned rectangle; curve [0-9]+ is not on a side of its bounding box"
          -- ${UNILAG} run ${INPUTS}/sedov2d.yaml --set mesh.geometry=geometry/quarter_annulus2d.geo)
 add_test(NAME error_limiter COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err7
          "sedov2d.yaml: key 'scheme.limiter': 'minmod' is not one of: barth_jespersen, vertex_based, node_fit, none"

@@ -1,9 +1,11 @@
 // mesh.mesher: lattice (src/mesh/LatticeMesh.cpp): the quadrant of inputs/geometry/quadrant2d.geo as an equilateral
-// lattice whose only cells smaller than the lattice's own lie at the two bottom corners, the .geo's groups naming its
-// boundary and cells; geometry that is not one axis-aligned rectangle is refused, naming the file and the curve.
+// lattice whose only cells smaller than the lattice's own lie at the two bottom corners, the octant of octant3d.geo as
+// a body-centred cubic lattice of tetrahedra all of one volume, the .geo's groups naming boundary and cells; geometry
+// that is not one axis-aligned rectangle or box is refused, naming the file and the entity.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <map>
 #include <cmath>
 #include <string>
 #include <vector>
@@ -82,12 +84,62 @@ TEST(LatticeMesh, RefusesANonRectangle)
     const std::string msg = inputError([&] { unilag::loadMesh(latticeScene(geo, 0.05)); });
     EXPECT_PRED2(contains, msg, geo);
     EXPECT_PRED2(contains, msg, "axis-aligned rectangle; curve ");
+    EXPECT_PRED2(contains, msg, "is not on a side of its bounding box");
 }
 
-TEST(LatticeMesh, RefusesAVolume)
+double tetVolume(const unilag::GlobalMesh& m, std::size_t c)
+{
+    const double* p[4];
+    for (int k = 0; k < 4; ++k)
+        p[k] = &m.coords[3 * m.cells[4 * c + k]];
+    double e[3][3];
+    for (int r = 0; r < 3; ++r)
+        for (int d = 0; d < 3; ++d)
+            e[r][d] = p[r + 1][d] - p[0][d];
+    return (e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) - e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
+            e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0])) /
+           6.0;
+}
+
+TEST(LatticeMesh, OctantTetrahedraAreAllOfOneVolume)
 {
     const std::string geo = kSource + "/inputs/geometry/octant3d.geo";
+    const auto m = unilag::loadMesh(latticeScene(geo, 0.3)); // 4 cubic cells a side, h = 0.3
+    EXPECT_EQ(m.dim, 3);
+    EXPECT_EQ(m.regionNames, std::vector<std::string>{"gas"});
+    ASSERT_EQ(m.nCells(), 12u * 64u);
+    EXPECT_EQ(m.nNodes(), 125u + 64u);
+    const double each = 0.3 * 0.3 * 0.3 / 12.0;
+    double total = 0.0;
+    for (std::size_t c = 0; c < m.nCells(); ++c)
+    {
+        const double v = tetVolume(m, c);
+        EXPECT_NEAR(v, each, 1e-14) << "cell " << c;
+        total += v;
+    }
+    EXPECT_NEAR(total, 1.2 * 1.2 * 1.2, 1e-12);
+    // two triangles per boundary face of a cubic cell: 32 on each side, 96 on the three outer sides together
+    std::map<std::string, int> faces;
+    for (int g : m.cellFaceGroup)
+        if (g >= 0)
+            ++faces[m.boundaryNames[g]];
+    EXPECT_EQ(faces, (std::map<std::string, int>{{"outer", 96}, {"symmetry_x", 32}, {"symmetry_y", 32},
+                                                  {"symmetry_z", 32}}));
+}
+
+TEST(LatticeMesh, RefusesAVolumeThatIsNotABox)
+{
+    TempDir dir;
+    const std::string geo = dir.write("cylinder.geo", "SetFactory(\"OpenCASCADE\");\nCylinder(1) = {0, 0, 0, 0, 0, 1, "
+                                                      "0.5};\nPhysical Volume(\"gas\") = {1};\n");
     const std::string msg = inputError([&] { unilag::loadMesh(latticeScene(geo, 0.2)); });
     EXPECT_PRED2(contains, msg, geo);
-    EXPECT_PRED2(contains, msg, "one plane rectangle");
+    EXPECT_PRED2(contains, msg, "axis-aligned box; surface ");
+}
+
+TEST(LatticeMesh, RefusesTwoSurfaces)
+{
+    const std::string geo = kSource + "/tests/meshes/mixed_tri_quad.geo";
+    const std::string msg = inputError([&] { unilag::loadMesh(latticeScene(geo, 0.1)); });
+    EXPECT_PRED2(contains, msg, "one axis-aligned rectangle; the geometry has 2 surfaces");
 }
