@@ -173,6 +173,8 @@ void readMeshSection(ConfigNode& root, Scene& s)
     }
     else if (const std::string problem = config::inputFileProblem(s.meshFile); !problem.empty())
         mesh.fail("file", problem + ": " + s.meshFile);
+    else if (mesh.has("mesher"))
+        mesh.fail("mesher", "a .msh (mesh.file) is read as it is: mesher chooses how a mesh.geometry is meshed");
     mesh.rejectUnknown();
 }
 

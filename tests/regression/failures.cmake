@@ -116,7 +116,10 @@ add_test(NAME error_mixed_elements COMMAND bash ${SCRIPTS}/expect_error.sh ${WOR
          "mixed_tri_quad.geo: element [0-9]+ is a Quadrilateral 4 \\(and [0-9]+ more\\): unilag takes linear triangles"
          -- ${UNILAG} run ${INPUTS}/sedov2d.yaml --set mesh.size=0.1 --set mesh.mesher=gmsh
          --set mesh.geometry=${CMAKE_CURRENT_SOURCE_DIR}/meshes/mixed_tri_quad.geo)
-# mesh.mesher: lattice meshes one axis-aligned rectangle (LatticeMesh.hpp); a quarter annulus is refused by its arc.
+# mesh.mesher: lattice meshes one axis-aligned rectangle (LatticeMesh.hpp); a quarter annulus is refused by its arc;
+# a mesher with a .msh said "unknown key".
+fuzz_error(mesher_with_file "key 'mesh.mesher': a .msh \\(mesh.file\\) is read as it is" ${SCENES}/inverted.yaml
+           mesh.mesher=lattice)
 add_test(NAME error_lattice_not_rectangle COMMAND bash ${SCRIPTS}/expect_error.sh ${WORK}/err_lattice
          "quarter_annulus2d.geo: mesh.mesher lattice meshes an axis-aligned rectangle; curve [0-9]+ is not on a side of its bounding box"
          -- ${UNILAG} run ${INPUTS}/sedov2d.yaml --set mesh.geometry=geometry/quarter_annulus2d.geo)
