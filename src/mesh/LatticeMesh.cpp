@@ -151,8 +151,8 @@ Lattice triangleLattice(const Box& r, double size)
 }
 
 /*! 3D: the body-centred cubic lattice of n[0] x n[1] x n[2] cells: corners and cell centres as nodes, and for each
- *  face between two cells four tetrahedra (the two centres and one edge of the face each). All are congruent, of
- *  volume |cell| / 12: no small cell anywhere. A face on the boundary is cut into two triangles by the diagonal
+ *  face between two cells four tetrahedra (the two centres and one edge of the face each), all of volume |cell| / 12
+ *  (congruent where the cells are cubes): no small cell anywhere. A face on the boundary is cut into two triangles by the diagonal
  *  through its corner of even i + j + k (the same choice around every corner, so the octant's corner is symmetric
  *  in its three planes), each a tetrahedron with its cell's centre, of the same volume. */
 class BccBuilder
