@@ -155,7 +155,7 @@ MaterialSpec readMaterial(ConfigNode& m)
     return spec;
 }
 
-//! mesh: a .geo to mesh at a size (by gmsh, or as a triangle lattice), or a .msh to read.
+//! mesh: a .geo to mesh at a size (by gmsh, or as a lattice: mesher), or a .msh to read.
 void readMeshSection(ConfigNode& root, Scene& s)
 {
     ConfigNode mesh = root.sub("mesh", true);

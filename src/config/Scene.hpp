@@ -140,7 +140,7 @@ struct Scene
     std::string geometry; //!< .geo to mesh at start-up (resolved path), or
     std::string meshFile; //!< .msh to read (resolved path)
     double meshSize = 0.0;
-    bool meshLattice = false; //!< mesh.mesher: lattice (a rectangle as equilateral rows; LatticeMesh.hpp)
+    bool meshLattice = false; //!< mesh.mesher: lattice (a rectangle or box as a lattice; LatticeMesh.hpp)
 
     std::map<std::string, MaterialSpec> materials;
     std::map<std::string, RegionSpec> regions;      //!< by gmsh physical group name (cells)

@@ -28,7 +28,8 @@ struct GlobalMesh
     std::size_t nNodes() const { return coords.size() / 3; }
 };
 
-/*! \brief Generate (from the scene's .geo and mesh size) or read (.msh) the mesh with the gmsh API.
+/*! \brief Generate (from the scene's .geo and mesh size, by gmsh or as a lattice: LatticeMesh.hpp) or read (.msh)
+ *  the mesh with the gmsh API.
  *  Checks: every cell in one region, consistent orientation (an element folded against the others of its
  *  region is "inverted"), no degenerate element, every boundary face in a boundary group.
  *  Throws InputError naming the file and the element. */
