@@ -34,18 +34,6 @@ std::string gmshError()
     return err.empty() ? "gmsh failed" : err;
 }
 
-double signedMeasure(int dim, const double* a, const double* b, const double* c, const double* d)
-{
-    if (dim == 2)
-        return 0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
-    const double e1[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
-    const double e2[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
-    const double e3[3] = {d[0] - a[0], d[1] - a[1], d[2] - a[2]};
-    return (e1[0] * (e2[1] * e3[2] - e2[2] * e3[1]) - e1[1] * (e2[0] * e3[2] - e2[2] * e3[0]) +
-            e1[2] * (e2[0] * e3[1] - e2[1] * e3[0])) /
-           6.0;
-}
-
 /*! Refuses an entity of the regions that holds elements other than linear simplices (quadrangles from
  *  Mesh.RecombineAll, second-order triangles from Mesh.ElementOrder = 2): unilag would drop them and leave a hole,
  *  reported as an unnamed boundary at best. */
@@ -310,6 +298,25 @@ void renumber(GlobalMesh& m)
 
 } // namespace
 
+double signedMeasure(int dim, const double* a, const double* b, const double* c, const double* d)
+{
+    if (dim == 2)
+        return 0.5 * ((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
+    const double e1[3] = {b[0] - a[0], b[1] - a[1], b[2] - a[2]};
+    const double e2[3] = {c[0] - a[0], c[1] - a[1], c[2] - a[2]};
+    const double e3[3] = {d[0] - a[0], d[1] - a[1], d[2] - a[2]};
+    return (e1[0] * (e2[1] * e3[2] - e2[2] * e3[1]) - e1[1] * (e2[0] * e3[2] - e2[2] * e3[0]) +
+            e1[2] * (e2[0] * e3[1] - e2[1] * e3[0])) /
+           6.0;
+}
+
+double signedMeasure(const GlobalMesh& m, std::size_t cell)
+{
+    const int* n = &m.cells[std::size_t(m.nv()) * cell];
+    const double* x = m.coords.data();
+    return signedMeasure(m.dim, x + 3 * n[0], x + 3 * n[1], x + 3 * n[2], m.dim == 3 ? x + 3 * n[3] : nullptr);
+}
+
 /*! gmsh's quality (gamma) below which free tetrahedra are optimised. 0.6 against gmsh's 0.3, on the Sedov octant at
  *  order 2: 1.5-1.8x fewer steps, L1 5-10% lower (docs/sedov.md, session 29). No effect on triangles, extruded or
  *  transfinite volumes. */
@@ -363,10 +370,13 @@ GlobalMesh loadMesh(const Scene& scene)
                 gmsh::option::setNumber("Mesh.MeshSizeMin", scene.meshSize);
                 gmsh::option::setNumber("Mesh.MeshSizeMax", scene.meshSize);
                 cells = estimatedCells(scene.meshSize);
-                if (cells <= maxEstimatedCells && scene.meshLattice)
-                    meshAsLattice(source, scene.meshSize);
-                else if (cells <= maxEstimatedCells)
-                    gmsh::model::mesh::generate(gmsh::model::getDimension());
+                if (cells <= maxEstimatedCells)
+                {
+                    if (scene.meshLattice)
+                        meshAsLattice(source, scene.meshSize);
+                    else
+                        gmsh::model::mesh::generate(gmsh::model::getDimension());
+                }
             }
         }
         catch (const InputError&)

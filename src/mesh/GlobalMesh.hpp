@@ -28,6 +28,11 @@ struct GlobalMesh
     std::size_t nNodes() const { return coords.size() / 3; }
 };
 
+/*! Signed area (2D: a, b, c; d unused) or volume (3D) of a simplex, positive when counter-clockwise / right-handed. */
+double signedMeasure(int dim, const double* a, const double* b, const double* c, const double* d);
+//! The same for one cell of the mesh.
+double signedMeasure(const GlobalMesh& m, std::size_t cell);
+
 /*! \brief Generate (from the scene's .geo and mesh size, by gmsh or as a lattice: LatticeMesh.hpp) or read (.msh)
  *  the mesh with the gmsh API.
  *  Checks: every cell in one region, consistent orientation (an element folded against the others of its

@@ -12,6 +12,7 @@
 
 #include "core/Errors.hpp"
 #include "core/Format.hpp"
+#include "mesh/GlobalMesh.hpp"
 
 namespace unilag
 {
@@ -239,17 +240,7 @@ class BccBuilder
     void tet(int a, int b, int c, int d)
     {
         const double* x = l_.xyz.data();
-        double e[3][3];
-        for (int k = 0; k < 3; ++k)
-        {
-            e[0][k] = x[3 * b + k] - x[3 * a + k];
-            e[1][k] = x[3 * c + k] - x[3 * a + k];
-            e[2][k] = x[3 * d + k] - x[3 * a + k];
-        }
-        const double det = e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) -
-                           e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
-                           e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0]);
-        if (det < 0.0)
+        if (signedMeasure(3, x + 3 * a, x + 3 * b, x + 3 * c, x + 3 * d) < 0.0)
             std::swap(c, d);
         l_.cells.insert(l_.cells.end(), {tagOf(a), tagOf(b), tagOf(c), tagOf(d)});
     }

@@ -28,14 +28,6 @@ unilag::Scene latticeScene(const std::string& geometry, double size)
     return s;
 }
 
-double area(const unilag::GlobalMesh& m, std::size_t c)
-{
-    const double* a = &m.coords[3 * m.cells[3 * c]];
-    const double* b = &m.coords[3 * m.cells[3 * c + 1]];
-    const double* d = &m.coords[3 * m.cells[3 * c + 2]];
-    return 0.5 * ((b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]));
-}
-
 double centroidY(const unilag::GlobalMesh& m, std::size_t c)
 {
     double y = 0.0;
@@ -57,7 +49,7 @@ TEST(LatticeMesh, QuadrantHasNoSmallCellAlongItsPlanesButAtTheCorners)
     int small = 0;
     for (std::size_t c = 0; c < m.nCells(); ++c)
     {
-        const double a = area(m, c);
+        const double a = unilag::signedMeasure(m, c);
         ASSERT_GT(a, 0.0) << "cell " << c << " is not counter-clockwise";
         total += a;
         if (a < 0.99 * full)
@@ -87,20 +79,6 @@ TEST(LatticeMesh, RefusesANonRectangle)
     EXPECT_PRED2(contains, msg, "is not on a side of its bounding box");
 }
 
-double tetVolume(const unilag::GlobalMesh& m, std::size_t c)
-{
-    const double* p[4];
-    for (int k = 0; k < 4; ++k)
-        p[k] = &m.coords[3 * m.cells[4 * c + k]];
-    double e[3][3];
-    for (int r = 0; r < 3; ++r)
-        for (int d = 0; d < 3; ++d)
-            e[r][d] = p[r + 1][d] - p[0][d];
-    return (e[0][0] * (e[1][1] * e[2][2] - e[1][2] * e[2][1]) - e[0][1] * (e[1][0] * e[2][2] - e[1][2] * e[2][0]) +
-            e[0][2] * (e[1][0] * e[2][1] - e[1][1] * e[2][0])) /
-           6.0;
-}
-
 TEST(LatticeMesh, OctantTetrahedraAreAllOfOneVolume)
 {
     const std::string geo = kSource + "/inputs/geometry/octant3d.geo";
@@ -113,7 +91,7 @@ TEST(LatticeMesh, OctantTetrahedraAreAllOfOneVolume)
     double total = 0.0;
     for (std::size_t c = 0; c < m.nCells(); ++c)
     {
-        const double v = tetVolume(m, c);
+        const double v = unilag::signedMeasure(m, c);
         EXPECT_NEAR(v, each, 1e-14) << "cell " << c;
         total += v;
     }

@@ -325,14 +325,6 @@ std::string meshError(const TempDir& dir, const std::string& text)
     return msg;
 }
 
-double signedArea(const unilag::GlobalMesh& m, std::size_t c)
-{
-    const double* a = &m.coords[3 * m.cells[3 * c]];
-    const double* b = &m.coords[3 * m.cells[3 * c + 1]];
-    const double* d = &m.coords[3 * m.cells[3 * c + 2]];
-    return 0.5 * ((b[0] - a[0]) * (d[1] - a[1]) - (b[1] - a[1]) * (d[0] - a[0]));
-}
-
 void expectSquare(const unilag::GlobalMesh& m)
 {
     EXPECT_EQ(m.dim, 2);
@@ -347,7 +339,7 @@ void expectSquare(const unilag::GlobalMesh& m)
     EXPECT_EQ(boundary, 4); // the four edges
     EXPECT_EQ(interior, 2); // the diagonal, seen from both triangles
     for (std::size_t c = 0; c < 2; ++c)
-        EXPECT_NEAR(signedArea(m, c), 0.5, 1e-15) << "cell " << c;
+        EXPECT_NEAR(unilag::signedMeasure(m, c), 0.5, 1e-15) << "cell " << c;
 }
 
 } // namespace
